@@ -1,0 +1,29 @@
+// Real roots of polynomials up to degree four. Every solver writes the real
+// roots it finds in ascending order and returns their count.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace toroid {
+
+// The quartic solvers that can be chosen by name (CLI --solver, YAML, API).
+enum class QuarticSolver {
+  Default,   // robust: exact distance function, monotone intervals (see torus.h)
+  Ferrari,   // textbook Ferrari with the dominant root of the resolvent cubic
+  Tianheng,  // the seed paper's closed form with its full case table
+};
+
+std::string_view solver_name(QuarticSolver s);
+std::optional<QuarticSolver> solver_from_name(std::string_view name);
+
+// a x^2 + b x + c = 0 (a may be 0).
+int solve_quadratic(double a, double b, double c, double roots[2]);
+// a x^3 + b x^2 + c x + d = 0 (a != 0).
+int solve_cubic(double a, double b, double c, double d, double roots[3]);
+// a x^4 + b x^3 + c x^2 + d x + e = 0 (a != 0), Ferrari's method.
+int solve_quartic_ferrari(double a, double b, double c, double d, double e, double roots[4]);
+// a x^4 + b x^3 + c x^2 + d x + e = 0 (a != 0), the seed paper's closed form.
+int solve_quartic_tianheng(double a, double b, double c, double d, double e, double roots[4]);
+
+}  // namespace toroid
