@@ -1,11 +1,20 @@
 // The `toroid` command line: a thin layer over the library.
 #include <CLI/CLI.hpp>
 
-#include <iostream>
+#include "intersect_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"toroid: a ray tracer with an exact, analytic torus"};
+  app.set_version_flag("--version", "toroid 0.1.0");
   app.require_subcommand(1);
-  CLI11_PARSE(app, argc, argv);
-  return 0;
+  int exit_code = 0;
+  toroid::cmd::add_intersect_command(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version exit 0; every usage error exits 2.
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  return exit_code;
 }

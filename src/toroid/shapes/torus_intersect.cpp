@@ -1,0 +1,415 @@
+// Ray–torus intersection. See docs/torus.md for the derivation and the
+// accuracy figures; the short version of the default solver:
+//
+//  1. The quartic P(t) = (|p|^2 + R^2 - r^2)^2 - 4 R^2 rho^2 factors exactly as
+//     P = h_out * h_in with
+//        h_out(t) = (rho - R)^2 + z^2 - r^2   (the tube around the centre circle)
+//        h_in(t)  = (rho + R)^2 + z^2 - r^2   (the spindle's inner "lemon"),
+//     rho = distance of p(t) = o + t d from the axis. Each factor is evaluated
+//     directly from the point: no O(R^4) coefficients cancel into an O(R^2 r^2)
+//     value, which is what ruins the quartic for thin tubes and far origins.
+//  2. rho(t) is the distance to a line, so rho'' = K / rho^3 with K constant
+//     along the ray; hence h_out'' = 2|d|^2 - 2 R K / rho^3 changes sign at
+//     most twice, at points known in closed form, and h_in is convex. Cut at
+//     those points, each piece is convex or concave: one extremum at most, two
+//     monotone parts, one root each. Newton from the side Fourier's condition
+//     names converges without overshoot; bisection guards it anyway. So no
+//     root is missed, whatever the structure: double roots (tangent rays) are
+//     the extrema that touch zero.
+//  3. The origin is first moved, exactly (double-double), to the ray's point
+//     nearest the centre, so that far cameras lose nothing; t is returned
+//     relative to the original origin.
+#include "toroid/shapes/torus_intersect.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace toroid {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// ---- Error-free transformations (Knuth's TwoSum, FMA TwoProduct).
+struct DoubleDouble {
+  double hi, lo;
+};
+
+DoubleDouble two_sum(double a, double b) {
+  const double s = a + b;
+  const double bb = s - a;
+  return {s, (a - (s - bb)) + (b - bb)};
+}
+
+// a + t * b, exactly up to ~2^-106 relative.
+DoubleDouble add_scaled(double a, double t, double b) {
+  const double p = t * b;
+  const double p_err = std::fma(t, b, -p);
+  const DoubleDouble s = two_sum(a, p);
+  const double lo = s.lo + p_err;
+  const double hi = s.hi + lo;
+  return {hi, lo - (hi - s.hi)};
+}
+
+DoubleDouble two_prod(double a, double b) {
+  const double p = a * b;
+  return {p, std::fma(a, b, -p)};
+}
+
+DoubleDouble dd_add(DoubleDouble a, DoubleDouble b) {
+  const DoubleDouble s = two_sum(a.hi, b.hi);
+  const double lo = s.lo + a.lo + b.lo;
+  const double hi = s.hi + lo;
+  return {hi, lo - (hi - s.hi)};
+}
+
+DoubleDouble dd_mul(DoubleDouble a, DoubleDouble b) {
+  DoubleDouble p = two_prod(a.hi, b.hi);
+  p.lo += a.hi * b.lo + a.lo * b.hi;
+  const double hi = p.hi + p.lo;
+  return {hi, p.lo - (hi - p.hi)};
+}
+
+DoubleDouble dd_sqrt(DoubleDouble a) {
+  if (a.hi <= 0) return {0, 0};
+  const double s = std::sqrt(a.hi);
+  const DoubleDouble s2 = two_prod(s, s);
+  const double corr = ((a.hi - s2.hi) - s2.lo + a.lo) / (2 * s);
+  const double hi = s + corr;
+  return {hi, corr - (hi - s)};
+}
+
+// One factor of the torus quartic along the ray, in the shifted frame
+// p(s) = origin + s * d. sign = -1 gives h_out, +1 gives h_in.
+class TorusFactor {
+ public:
+  TorusFactor(const DoubleDouble o[3], const double d[3], double major, double minor, double sign)
+      : d_{d[0], d[1], d[2]}, R_(major), r_(minor), sign_(sign) {
+    for (int i = 0; i < 3; ++i) {
+      o_hi_[i] = o[i].hi;
+      o_lo_[i] = o[i].lo;
+    }
+    dd_ = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    c_ = d[0] * d[0] + d[1] * d[1];
+    const double cross = o_hi_[0] * d[1] - o_hi_[1] * d[0];
+    K_ = cross * cross;
+  }
+
+  double dd() const { return dd_; }
+  double major() const { return R_; }
+  bool is_outer() const { return sign_ < 0; }
+  double c() const { return c_; }
+  double K() const { return K_; }
+
+  struct Value {
+    double h, dh;
+  };
+
+  // h and h' at s. `side` picks the one-sided derivative of rho where the
+  // ray crosses the axis (rho = 0): -1 from the left, +1 from the right.
+  Value eval(double s, double side = 1.0) const {
+    double p[3];
+    for (int i = 0; i < 3; ++i) p[i] = o_hi_[i] + std::fma(s, d_[i], o_lo_[i]);
+    const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
+    const double a = rho + sign_ * R_;  // rho - R, or rho + R
+    const double h = (a - r_) * (a + r_) + p[2] * p[2];
+    const double drho = rho > 0 ? (p[0] * d_[0] + p[1] * d_[1]) / rho : side * std::sqrt(c_);
+    return {h, 2.0 * (a * drho + p[2] * d_[2])};
+  }
+
+  // h at s in double-double arithmetic: used where double rounding would
+  // decide the answer (near-tangent rays, whose two roots are ill-conditioned).
+  double eval_precise(double s) const {
+    DoubleDouble p[3];
+    for (int i = 0; i < 3; ++i) p[i] = dd_add({o_hi_[i], o_lo_[i]}, two_prod(s, d_[i]));
+    const DoubleDouble rho = dd_sqrt(dd_add(dd_mul(p[0], p[0]), dd_mul(p[1], p[1])));
+    const DoubleDouble a = dd_add(rho, {sign_ * R_, 0});
+    const DoubleDouble r2 = two_prod(r_, r_);
+    const DoubleDouble h = dd_add(dd_add(dd_mul(a, a), dd_mul(p[2], p[2])), {-r2.hi, -r2.lo});
+    return h.hi + h.lo;
+  }
+
+  double minor() const { return r_; }
+
+  double second_derivative(double s) const {
+    double p[3];
+    for (int i = 0; i < 2; ++i) p[i] = o_hi_[i] + std::fma(s, d_[i], o_lo_[i]);
+    const double rho2 = p[0] * p[0] + p[1] * p[1];
+    const double rho3 = rho2 * std::sqrt(rho2);
+    return 2.0 * dd_ + sign_ * 2.0 * R_ * K_ / rho3;
+  }
+
+ private:
+  double o_hi_[3], o_lo_[3];
+  double d_[3];
+  double R_, r_, sign_;
+  double dd_, c_, K_;
+};
+
+// Root of a monotone function on [lo, hi] whose values at the ends have
+// opposite signs (or one is zero). `start_hi` says from which end Newton
+// converges without overshoot (Fourier's condition); bisection guards it.
+template <typename F>
+double solve_monotone(const F& f, double lo, double hi, double f_lo, bool start_hi) {
+  double x = start_hi ? hi : lo;
+  const bool lo_negative = f_lo < 0;
+  for (int it = 0; it < 100; ++it) {
+    const auto [v, dv] = f(x);
+    if (v == 0) return x;
+    if ((v < 0) == lo_negative)
+      lo = x;
+    else
+      hi = x;
+    double next = x - v / dv;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // also catches NaN
+    const double step = std::abs(next - x);
+    x = next;
+    if (step <= 2 * kEps * std::abs(x) || hi - lo <= 2 * kEps * std::max(std::abs(lo), std::abs(hi))) break;
+  }
+  return x;
+}
+
+// Collects the roots of one factor, in ascending order, over [lo, hi] cut
+// at the given convexity breakpoints.
+class RootCollector {
+ public:
+  RootCollector(const TorusFactor& f, double* out, int capacity) : f_(f), out_(out), cap_(capacity) {}
+  int count() const { return n_; }
+
+  // Roots of f on the piece [lo, hi), where f is convex (or concave) and so
+  // has at most one extremum. A zero exactly at `hi` counts only if `last`.
+  void piece(double lo, double hi, bool last) {
+    if (lo == hi) {  // a single point: the horn torus's centre
+      if (f_.eval(lo).h == 0) push(lo);
+      return;
+    }
+    const auto vlo = f_.eval(lo, +1.0);
+    const auto vhi = f_.eval(hi, -1.0);
+    if (vlo.dh * vhi.dh >= 0) {
+      monotone(lo, hi, vlo.h, vhi.h, last, f_.second_derivative(0.5 * (lo + hi)) > 0);
+      return;
+    }
+    // One extremum inside: h' is monotone here, solve h' = 0 for it.
+    const double m = solve_monotone(
+        [&](double s) {
+          const auto v = f_.eval(s);
+          return std::pair<double, double>{v.dh, f_.second_derivative(s)};
+        },
+        lo, hi, vlo.dh, false);
+    double hm = f_.eval(m).h;
+    // Near zero the sign of h at the extremum decides between no root and a
+    // close pair: settle it in double-double.
+    const double scale = f_.minor() * f_.minor() + std::abs(hm);
+    if (std::abs(hm) < 1e-6 * scale) hm = f_.eval_precise(m);
+    if (hm == 0) {  // tangent: a double root
+      push(m);
+      push(m);
+      return;
+    }
+    const bool convex = vlo.dh < 0;  // falls then rises: a minimum
+    // A close pair straddles m when |hm| is small: polish both in double-double.
+    const bool close = std::abs(hm) < 1e-6 * scale;
+    monotone(lo, m, vlo.h, hm, false, convex, close);
+    monotone(m, hi, hm, vhi.h, last, convex, close);
+  }
+
+ private:
+  void monotone(double lo, double hi, double hlo, double hhi, bool last, bool convex, bool precise = false) {
+    if (hlo == 0) {
+      push(lo);
+    } else if ((hlo < 0) != (hhi < 0) && hhi != 0) {
+      // Newton converges monotonically from the end where h and h'' agree in sign.
+      const bool start_hi = (hhi > 0) == convex;
+      double x = solve_monotone(
+          [&](double s) {
+            const auto v = f_.eval(s);
+            return std::pair<double, double>{v.h, v.dh};
+          },
+          lo, hi, hlo, start_hi);
+      if (precise) {
+        // Same bracketed iteration with the value in double-double, from x.
+        const double span = std::max(std::abs(x - lo), std::abs(hi - x));
+        (void)span;
+        x = solve_monotone(
+            [&](double s) {
+              return std::pair<double, double>{f_.eval_precise(s), f_.eval(s).dh};
+            },
+            lo, hi, hlo, start_hi);
+      }
+      push(x);
+    } else if (last && hhi == 0) {
+      push(hi);
+    }
+  }
+
+  void push(double s) {
+    if (n_ < cap_) out_[n_++] = s;
+  }
+
+  const TorusFactor& f_;
+  double* out_;
+  int cap_;
+  int n_ = 0;
+};
+
+// Roots of one factor inside the ball |p| <= radius, in the shifted frame,
+// ascending, restricted to [s_min, s_max]. Pieces wholly outside that window
+// are skipped, and with `first_only` the search stops at the first root.
+int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3], double radius,
+                 double s_min, double s_max, bool first_only, double* out) {
+  // Ball: dd s^2 + 2 b s + (|o|^2 - radius^2) = 0. The origin is the ray's
+  // point nearest the centre, so b is ~0 and the chord is well conditioned.
+  const double b = o[0].hi * d[0] + o[1].hi * d[1] + o[2].hi * d[2];
+  const double oo = o[0].hi * o[0].hi + o[1].hi * o[1].hi + o[2].hi * o[2].hi;
+  // Inflate a little so that rounding never clips a root at the ball's edge.
+  const double rad = radius * (1 + 1e-9) + 1e-300;
+  const double disc = b * b - f.dd() * (oo - rad * rad);
+  if (disc < 0) return 0;
+  const double w = std::sqrt(disc);
+  double lo = (-b - w) / f.dd();
+  double hi = (-b + w) / f.dd();
+  if (hi < s_min || lo > s_max) return 0;
+
+  // Breakpoints of convexity: the axis crossing when K = 0 (a kink of rho),
+  // else for h_out the two points where rho^3 = R K / |d|^2.
+  double cuts[4];
+  int ncut = 0;
+  cuts[ncut++] = lo;
+  if (f.c() > 0) {
+    const double s_axis = -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c();
+    if (f.K() == 0) {
+      if (s_axis > lo && s_axis < hi) cuts[ncut++] = s_axis;
+    } else if (f.is_outer()) {
+      const double rho_i = std::cbrt(f.major() * f.K() / f.dd());
+      const double excess = rho_i * rho_i - f.K() / f.c();
+      if (excess > 0) {
+        const double hw = std::sqrt(excess / f.c());
+        if (s_axis - hw > lo && s_axis - hw < hi) cuts[ncut++] = s_axis - hw;
+        if (s_axis + hw > lo && s_axis + hw < hi) cuts[ncut++] = s_axis + hw;
+      }
+    }
+  }
+  cuts[ncut] = hi;
+
+  RootCollector collector(f, out, 4);
+  for (int i = 0; i < ncut; ++i) {
+    if (cuts[i + 1] < s_min || cuts[i] > s_max) continue;
+    collector.piece(cuts[i], cuts[i + 1], i + 1 == ncut);
+    if (first_only) {
+      for (int k = 0; k < collector.count(); ++k)
+        if (out[k] > s_min && out[k] < s_max) return collector.count();
+    }
+  }
+  return collector.count();
+}
+
+// The default solver on the shifted frame. Writes roots as t values.
+struct ShiftedRay {
+  DoubleDouble o[3];
+  double t_shift;
+};
+
+ShiftedRay shift_to_nearest_centre_point(const double origin[3], const double d[3]) {
+  const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  const double od = origin[0] * d[0] + origin[1] * d[1] + origin[2] * d[2];
+  ShiftedRay r;
+  // Any double near the true value works: the shift itself is exact.
+  r.t_shift = dd > 0 ? -od / dd : 0.0;
+  for (int i = 0; i < 3; ++i) r.o[i] = add_scaled(origin[i], r.t_shift, d[i]);
+  return r;
+}
+
+int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
+                  bool first_only, double t[4]) {
+  const ShiftedRay ray = shift_to_nearest_centre_point(origin, d);
+  const double s_min = t_min - ray.t_shift, s_max = t_max - ray.t_shift;
+  double s_out[4], s_in[4];
+  const TorusFactor outer(ray.o, d, R, r, -1.0);
+  int n_out = factor_roots(outer, ray.o, d, R + r, s_min, s_max, first_only && r < R, s_out);
+  int n_in = 0;
+  if (r >= R) {  // the spindle's lemon (a point for the horn torus)
+    const TorusFactor inner(ray.o, d, R, r, +1.0);
+    n_in = factor_roots(inner, ray.o, d, std::sqrt((r - R) * (r + R)), s_min, s_max, false, s_in);
+  }
+  // Merge the two ascending lists.
+  int n = 0, i = 0, j = 0;
+  while ((i < n_out || j < n_in) && n < 4) {
+    const double s = (j >= n_in || (i < n_out && s_out[i] <= s_in[j])) ? s_out[i++] : s_in[j++];
+    t[n++] = ray.t_shift + s;
+  }
+  return n;
+}
+
+// Sort a few values in place (insertion sort: at most four).
+void sort_small(double* v, int n) {
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && v[j] < v[j - 1]; --j) std::swap(v[j], v[j - 1]);
+}
+
+}  // namespace
+
+void torus_quartic_coefficients(double R, double r, const double o[3], const double d[3], double coeffs[5]) {
+  // |o + t d|^2 = alpha t^2 + 2 beta t + |o|^2, and gamma = |o|^2 + R^2 - r^2:
+  // (alpha t^2 + 2 beta t + gamma)^2 = 4 R^2 ((ox + t dx)^2 + (oy + t dy)^2).
+  const double alpha = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  const double beta = o[0] * d[0] + o[1] * d[1] + o[2] * d[2];
+  const double gamma = o[0] * o[0] + o[1] * o[1] + o[2] * o[2] + R * R - r * r;
+  const double four_r2 = 4 * R * R;
+  coeffs[0] = alpha * alpha;
+  coeffs[1] = 4 * alpha * beta;
+  coeffs[2] = 2 * alpha * gamma + 4 * beta * beta - four_r2 * (d[0] * d[0] + d[1] * d[1]);
+  coeffs[3] = 4 * beta * gamma - 2 * four_r2 * (o[0] * d[0] + o[1] * d[1]);
+  coeffs[4] = gamma * gamma - four_r2 * (o[0] * o[0] + o[1] * o[1]);
+}
+
+int intersect_torus(double major, double minor, const double origin[3], const double direction[3], double t[4],
+                    QuarticSolver solver) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (solver == QuarticSolver::Default) return solve_default(major, minor, origin, direction, -kInf, kInf, false, t);
+  double k[5];
+  torus_quartic_coefficients(major, minor, origin, direction, k);
+  const int n = solver == QuarticSolver::Ferrari ? solve_quartic_ferrari(k[0], k[1], k[2], k[3], k[4], t)
+                                                 : solve_quartic_tianheng(k[0], k[1], k[2], k[3], k[4], t);
+  sort_small(t, n);
+  return n;
+}
+
+bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
+                             double t_min, double t_max, double* t, QuarticSolver solver) {
+  double roots[4];
+  const int n = solver == QuarticSolver::Default
+                    ? solve_default(major, minor, origin, direction, t_min, t_max, true, roots)
+                    : intersect_torus(major, minor, origin, direction, roots, solver);
+  for (int i = 0; i < n; ++i)
+    if (roots[i] > t_min && roots[i] < t_max) {
+      *t = roots[i];
+      return true;
+    }
+  return false;
+}
+
+void torus_normal(double R, double r, const double p[3], double n[3]) {
+  const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
+  if (rho == 0) {
+    // An apex of a horn or spindle torus: the surface is a cone there; take
+    // the axis direction away from the centre (up at the horn's centre).
+    n[0] = 0;
+    n[1] = 0;
+    n[2] = p[2] < 0 ? -1.0 : 1.0;
+    return;
+  }
+  // On the spindle's inner part the nearest point of the centre circle is
+  // the one across the axis: pick the factor the point satisfies best.
+  double k = 1 - R / rho;
+  if (r > R) {
+    const double a_out = rho - R, a_in = rho + R;
+    const double h_out = std::abs((a_out - r) * (a_out + r) + p[2] * p[2]);
+    const double h_in = std::abs((a_in - r) * (a_in + r) + p[2] * p[2]);
+    if (h_in < h_out) k = 1 + R / rho;
+  }
+  n[0] = k * p[0];
+  n[1] = k * p[1];
+  n[2] = p[2];
+}
+
+}  // namespace toroid

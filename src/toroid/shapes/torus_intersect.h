@@ -1,0 +1,41 @@
+// Ray–torus intersection: the one place where the torus is solved. The Torus
+// shape, the `toroid intersect` command, the benchmarks and the accuracy
+// harness all call these functions, and so can another renderer.
+//
+// The torus is in object space, ring in the xy-plane, axis z, centred at the
+// origin: (sqrt(x^2 + y^2) - major)^2 + z^2 = minor^2. Any major > 0 and
+// minor > 0 is allowed: minor >= major gives horn and spindle tori, whose
+// whole quartic surface (the spindle's inner "lemon" included) is intersected.
+#pragma once
+
+#include "toroid/roots/quartic.h"
+
+namespace toroid {
+
+// Every real root t of |o + t d| on the torus (negative ones too), ascending,
+// with multiplicity where the quartic has a multiple root. `direction` need
+// not be of unit length. Returns the count (0..4) written to t.
+int intersect_torus(double major, double minor, const double origin[3], const double direction[3],
+                    double t[4], QuarticSolver solver = QuarticSolver::Default);
+
+// The nearest root in the open interval (t_min, t_max), as a renderer needs
+// it; same accuracy as intersect_torus, with an early exit. Returns false and
+// leaves *t unchanged when there is none.
+bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
+                             double t_min, double t_max, double* t,
+                             QuarticSolver solver = QuarticSolver::Default);
+
+// The quartic a t^4 + b t^3 + c t^2 + d t + e of the seed paper, formed
+// directly from the inputs (coeffs[0] = a ... coeffs[4] = e). The closed-form
+// solvers use it; the default solver does not (see docs/torus.md).
+void torus_quartic_coefficients(double major, double minor, const double origin[3], const double direction[3],
+                                double coeffs[5]);
+
+// The seed's normal at a point on the surface (object space, not normalised):
+// ((1 - R/rho) x, (1 - R/rho) y, z), with rho = sqrt(x^2 + y^2). On the
+// spindle's inner part (closer to the far side of the centre circle) the
+// nearest point of the circle is on the other side, and the normal uses
+// (1 + R/rho). Finite everywhere, the axis points included.
+void torus_normal(double major, double minor, const double p[3], double n[3]);
+
+}  // namespace toroid

@@ -1,0 +1,186 @@
+// intersect_torus at known roots, including the seed's special geometries.
+#include "toroid/shapes/torus_intersect.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+namespace toroid {
+namespace {
+
+struct Roots {
+  int n;
+  double t[4];
+};
+
+Roots roots(double R, double r, std::array<double, 3> o, std::array<double, 3> d,
+            QuarticSolver s = QuarticSolver::Default) {
+  Roots out{};
+  out.n = intersect_torus(R, r, o.data(), d.data(), out.t, s);
+  return out;
+}
+
+TEST(TorusIntersect, RayThroughTheHoleHasFourRoots) {
+  const Roots x = roots(1, 0.25, {-5, 0, 0}, {1, 0, 0});
+  ASSERT_EQ(x.n, 4);
+  EXPECT_DOUBLE_EQ(x.t[0], 3.75);
+  EXPECT_DOUBLE_EQ(x.t[1], 4.25);
+  EXPECT_DOUBLE_EQ(x.t[2], 5.75);
+  EXPECT_DOUBLE_EQ(x.t[3], 6.25);
+}
+
+TEST(TorusIntersect, DirectionNeedNotBeUnit) {
+  const Roots x = roots(1, 0.25, {-5, 0, 0}, {2, 0, 0});
+  ASSERT_EQ(x.n, 4);
+  EXPECT_DOUBLE_EQ(x.t[0], 1.875);
+  EXPECT_DOUBLE_EQ(x.t[3], 3.125);
+}
+
+TEST(TorusIntersect, NegativeRootsAreReported) {
+  const Roots x = roots(1, 0.25, {5, 0, 0}, {1, 0, 0});
+  ASSERT_EQ(x.n, 4);
+  EXPECT_DOUBLE_EQ(x.t[0], -6.25);
+  EXPECT_DOUBLE_EQ(x.t[3], -3.75);
+}
+
+TEST(TorusIntersect, RayTangentToTheTopGivesTwoDoubleRoots) {
+  const Roots x = roots(1, 0.25, {-5, 0, 0.25}, {1, 0, 0});
+  ASSERT_EQ(x.n, 4);
+  EXPECT_DOUBLE_EQ(x.t[0], 4);
+  EXPECT_DOUBLE_EQ(x.t[1], 4);
+  EXPECT_DOUBLE_EQ(x.t[2], 6);
+  EXPECT_DOUBLE_EQ(x.t[3], 6);
+}
+
+TEST(TorusIntersect, RayAboveTheTorusMisses) { EXPECT_EQ(roots(1, 0.25, {-5, 0, 0.2500001}, {1, 0, 0}).n, 0); }
+
+TEST(TorusIntersect, RayAlongTheAxisMissesARingTorus) { EXPECT_EQ(roots(1, 0.25, {0, 0, -5}, {0, 0, 1}).n, 0); }
+
+TEST(TorusIntersect, RayParallelToTheAxisThroughTheTube) {
+  const Roots x = roots(1, 0.25, {1, 0, -5}, {0, 0, 1});
+  ASSERT_EQ(x.n, 2);
+  EXPECT_DOUBLE_EQ(x.t[0], 4.75);
+  EXPECT_DOUBLE_EQ(x.t[1], 5.25);
+}
+
+TEST(TorusIntersect, HornTorusCentreIsADoubleRoot) {
+  const Roots x = roots(1, 1, {-5, 0, 0}, {1, 0, 0});
+  ASSERT_EQ(x.n, 4);
+  EXPECT_DOUBLE_EQ(x.t[0], 3);
+  EXPECT_DOUBLE_EQ(x.t[1], 5);
+  EXPECT_DOUBLE_EQ(x.t[2], 5);
+  EXPECT_DOUBLE_EQ(x.t[3], 7);
+}
+
+TEST(TorusIntersect, SpindleTorusInnerLemonIsIntersected) {
+  // r = 1.5: outer surface at |x| = 2.5, lemon at |x| = 0.5.
+  const Roots x = roots(1, 1.5, {-5, 0, 0}, {1, 0, 0});
+  ASSERT_EQ(x.n, 4);
+  EXPECT_DOUBLE_EQ(x.t[0], 2.5);
+  EXPECT_DOUBLE_EQ(x.t[1], 4.5);
+  EXPECT_DOUBLE_EQ(x.t[2], 5.5);
+  EXPECT_DOUBLE_EQ(x.t[3], 7.5);
+}
+
+TEST(TorusIntersect, SpindleAxisRayMeetsTheApexesTwice) {
+  const Roots x = roots(1, 1.5, {0, 0, -5}, {0, 0, 1});
+  ASSERT_EQ(x.n, 4);
+  const double apex = std::sqrt(1.5 * 1.5 - 1);
+  EXPECT_NEAR(x.t[0], 5 - apex, 1e-15);
+  EXPECT_NEAR(x.t[1], 5 - apex, 1e-15);
+  EXPECT_NEAR(x.t[2], 5 + apex, 1e-15);
+  EXPECT_NEAR(x.t[3], 5 + apex, 1e-15);
+}
+
+TEST(TorusIntersect, FarOriginKeepsFullPrecision) {
+  const Roots x = roots(1, 0.25, {-1e8, 0, 0}, {1, 0, 0});
+  ASSERT_EQ(x.n, 4);
+  EXPECT_EQ(x.t[0], 1e8 - 1.25);
+  EXPECT_EQ(x.t[1], 1e8 - 0.75);
+  EXPECT_EQ(x.t[2], 1e8 + 0.75);
+  EXPECT_EQ(x.t[3], 1e8 + 1.25);
+}
+
+TEST(TorusIntersect, ThinTubeIsFound) {
+  const Roots x = roots(1, 1e-4, {-5, 0, 0}, {1, 0, 0});
+  ASSERT_EQ(x.n, 4);
+  EXPECT_NEAR(x.t[0], 3.9999, 1e-15);
+  EXPECT_NEAR(x.t[1], 4.0001, 1e-15);
+}
+
+TEST(TorusIntersect, NearestRootInAnInterval) {
+  const double o[3] = {-5, 0, 0}, d[3] = {1, 0, 0};
+  double t = -1;
+  ASSERT_TRUE(intersect_torus_nearest(1, 0.25, o, d, 0, 100, &t));
+  EXPECT_DOUBLE_EQ(t, 3.75);
+  ASSERT_TRUE(intersect_torus_nearest(1, 0.25, o, d, 4, 100, &t));
+  EXPECT_DOUBLE_EQ(t, 4.25);
+  ASSERT_TRUE(intersect_torus_nearest(1, 0.25, o, d, 4.3, 100, &t));
+  EXPECT_DOUBLE_EQ(t, 5.75);
+  EXPECT_FALSE(intersect_torus_nearest(1, 0.25, o, d, 0, 3.7, &t));
+  EXPECT_FALSE(intersect_torus_nearest(1, 0.25, o, d, 6.3, 100, &t));
+}
+
+TEST(TorusIntersect, NearestOnSpindleConsidersTheLemon) {
+  const double o[3] = {0, 0, 0}, d[3] = {1, 0, 0};
+  double t = -1;
+  ASSERT_TRUE(intersect_torus_nearest(1, 1.5, o, d, 0, 100, &t));
+  EXPECT_DOUBLE_EQ(t, 0.5);
+}
+
+TEST(TorusNormal, OuterEquatorPointsOutward) {
+  const double p[3] = {1.25, 0, 0};
+  double n[3];
+  torus_normal(1, 0.25, p, n);
+  EXPECT_GT(n[0], 0);
+  EXPECT_DOUBLE_EQ(n[1], 0);
+  EXPECT_DOUBLE_EQ(n[2], 0);
+}
+
+TEST(TorusNormal, InnerEquatorPointsToTheAxis) {
+  const double p[3] = {0, 0.75, 0};
+  double n[3];
+  torus_normal(1, 0.25, p, n);
+  EXPECT_LT(n[1], 0);
+  EXPECT_DOUBLE_EQ(n[0], 0);
+}
+
+TEST(TorusNormal, TopPointsUp) {
+  const double p[3] = {0, 1, 0.25};
+  double n[3];
+  torus_normal(1, 0.25, p, n);
+  EXPECT_NEAR(n[1], 0, 1e-15);
+  EXPECT_GT(n[2], 0);
+}
+
+TEST(TorusNormal, SpindleLemonPointsAwayFromTheCentre) {
+  const double p[3] = {0.5, 0, 0};  // lemon of R = 1, r = 1.5
+  double n[3];
+  torus_normal(1, 1.5, p, n);
+  EXPECT_GT(n[0], 0);
+}
+
+TEST(TorusNormal, AxisPointsAreFinite) {
+  const double apex[3] = {0, 0, std::sqrt(1.25)};
+  double n[3];
+  torus_normal(1, 1.5, apex, n);
+  for (double c : n) EXPECT_TRUE(std::isfinite(c));
+  EXPECT_GT(n[2], 0);
+  const double centre[3] = {0, 0, 0};
+  torus_normal(1, 1, centre, n);
+  for (double c : n) EXPECT_TRUE(std::isfinite(c));
+}
+
+TEST(TorusQuartic, CoefficientsMatchTheDerivation) {
+  // o = (-5,0,0), d = (1,0,0), R = 1, r = 0.25: (t-3.75)(t-4.25)(t-5.75)(t-6.25).
+  const double o[3] = {-5, 0, 0}, d[3] = {1, 0, 0};
+  double k[5];
+  torus_quartic_coefficients(1, 0.25, o, d, k);
+  EXPECT_DOUBLE_EQ(k[0], 1);
+  EXPECT_DOUBLE_EQ(k[1], -20);  // -(sum of roots)
+  EXPECT_DOUBLE_EQ(k[4], 3.75 * 4.25 * 5.75 * 6.25);
+}
+
+}  // namespace
+}  // namespace toroid
