@@ -147,11 +147,11 @@ class TorusFactor {
 };
 
 // Root of a monotone function on [lo, hi] whose values at the ends have
-// opposite signs (or one is zero). `start_hi` says from which end Newton
-// converges without overshoot (Fourier's condition); bisection guards it.
+// opposite signs, from the first guess x0 (inside). Newton, guarded by
+// bisection; stops when a step is below `tol`.
 template <typename F>
-double solve_monotone(const F& f, double lo, double hi, double f_lo, bool start_hi) {
-  double x = start_hi ? hi : lo;
+double solve_monotone(const F& f, double lo, double hi, double f_lo, double x0, double tol) {
+  double x = x0;
   const bool lo_negative = f_lo < 0;
   for (int it = 0; it < 100; ++it) {
     const auto [v, dv] = f(x);
@@ -164,16 +164,23 @@ double solve_monotone(const F& f, double lo, double hi, double f_lo, bool start_
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // also catches NaN
     const double step = std::abs(next - x);
     x = next;
-    if (step <= 2 * kEps * std::abs(x) || hi - lo <= 2 * kEps * std::max(std::abs(lo), std::abs(hi))) break;
+    if (step <= tol || hi - lo <= tol) break;
   }
   return x;
 }
 
-// Collects the roots of one factor, in ascending order, over [lo, hi] cut
-// at the given convexity breakpoints.
+// A first guess inside (lo, hi): the Newton step from `from` if it lands
+// inside, else the midpoint.
+double first_guess(double from, double v, double dv, double lo, double hi) {
+  const double x = from - v / dv;
+  return x > lo && x < hi ? x : 0.5 * (lo + hi);
+}
+
+// Collects the roots of one factor, in ascending order, piece by piece.
 class RootCollector {
  public:
-  RootCollector(const TorusFactor& f, double* out, int capacity) : f_(f), out_(out), cap_(capacity) {}
+  RootCollector(const TorusFactor& f, double* out, double length_scale)
+      : f_(f), out_(out), tol_root_(2 * kEps * length_scale), tol_extremum_(1e-10 * length_scale) {}
   int count() const { return n_; }
 
   // Roots of f on the piece [lo, hi), where f is convex (or concave) and so
@@ -185,70 +192,78 @@ class RootCollector {
     }
     const auto vlo = f_.eval(lo, +1.0);
     const auto vhi = f_.eval(hi, -1.0);
+    const bool convex = f_.second_derivative(0.5 * (lo + hi)) > 0;
     if (vlo.dh * vhi.dh >= 0) {
-      monotone(lo, hi, vlo.h, vhi.h, last, f_.second_derivative(0.5 * (lo + hi)) > 0);
+      monotone(lo, hi, vlo, vhi, last, convex, false);
       return;
     }
-    // One extremum inside: h' is monotone here, solve h' = 0 for it.
+    // One extremum inside. The tangents at the two ends bound f from below
+    // (convex) or above (concave): if that bound keeps its sign, no root.
+    const double x_cross = (vhi.h - vlo.h + vlo.dh * lo - vhi.dh * hi) / (vlo.dh - vhi.dh);
+    const double bound = vlo.h + vlo.dh * (x_cross - lo);
+    if (convex ? (bound > 0 && vlo.h > 0 && vhi.h > 0) : (bound < 0 && vlo.h < 0 && vhi.h < 0)) return;
+    // Solve h' = 0 (h' is monotone here) from where the tangents cross.
+    const double x0 = x_cross > lo && x_cross < hi ? x_cross : 0.5 * (lo + hi);
     const double m = solve_monotone(
         [&](double s) {
           const auto v = f_.eval(s);
           return std::pair<double, double>{v.dh, f_.second_derivative(s)};
         },
-        lo, hi, vlo.dh, false);
+        lo, hi, vlo.dh, x0, tol_extremum_);
     double hm = f_.eval(m).h;
     // Near zero the sign of h at the extremum decides between no root and a
     // close pair: settle it in double-double.
     const double scale = f_.minor() * f_.minor() + std::abs(hm);
-    if (std::abs(hm) < 1e-6 * scale) hm = f_.eval_precise(m);
+    const bool close = std::abs(hm) < 1e-6 * scale;
+    if (close) hm = f_.eval_precise(m);
     if (hm == 0) {  // tangent: a double root
       push(m);
       push(m);
       return;
     }
-    const bool convex = vlo.dh < 0;  // falls then rises: a minimum
-    // A close pair straddles m when |hm| is small: polish both in double-double.
-    const bool close = std::abs(hm) < 1e-6 * scale;
-    monotone(lo, m, vlo.h, hm, false, convex, close);
-    monotone(m, hi, hm, vhi.h, last, convex, close);
+    const TorusFactor::Value vm{hm, 0.0};
+    monotone(lo, m, vlo, vm, false, convex, close);
+    monotone(m, hi, vm, vhi, last, convex, close);
   }
 
  private:
-  void monotone(double lo, double hi, double hlo, double hhi, bool last, bool convex, bool precise = false) {
-    if (hlo == 0) {
+  // Root on [lo, hi) where f is monotone, if the ends differ in sign.
+  void monotone(double lo, double hi, TorusFactor::Value vlo, TorusFactor::Value vhi, bool last, bool convex,
+                bool precise) {
+    if (vlo.h == 0) {
       push(lo);
-    } else if ((hlo < 0) != (hhi < 0) && hhi != 0) {
-      // Newton converges monotonically from the end where h and h'' agree in sign.
-      const bool start_hi = (hhi > 0) == convex;
-      double x = solve_monotone(
-          [&](double s) {
-            const auto v = f_.eval(s);
-            return std::pair<double, double>{v.h, v.dh};
-          },
-          lo, hi, hlo, start_hi);
-      if (precise) {
-        // Same bracketed iteration with the value in double-double, from x.
-        const double span = std::max(std::abs(x - lo), std::abs(hi - x));
-        (void)span;
-        x = solve_monotone(
-            [&](double s) {
-              return std::pair<double, double>{f_.eval_precise(s), f_.eval(s).dh};
-            },
-            lo, hi, hlo, start_hi);
-      }
-      push(x);
-    } else if (last && hhi == 0) {
-      push(hi);
+      return;
     }
+    if (vhi.h == 0) {
+      if (last) push(hi);
+      return;
+    }
+    if ((vlo.h < 0) == (vhi.h < 0)) return;
+    // Newton converges without overshoot from the end where h and h''
+    // agree in sign (Fourier's condition): start with its step.
+    const bool from_hi = (vhi.h > 0) == convex;
+    const double x0 = from_hi ? first_guess(hi, vhi.h, vhi.dh, lo, hi) : first_guess(lo, vlo.h, vlo.dh, lo, hi);
+    double x = solve_monotone(
+        [&](double s) {
+          const auto v = f_.eval(s);
+          return std::pair<double, double>{v.h, v.dh};
+        },
+        lo, hi, vlo.h, x0, tol_root_ * 0.5 + 2 * kEps * std::abs(x0));
+    if (precise) {
+      // A close pair: the same iteration with the value in double-double.
+      x = solve_monotone([&](double s) { return std::pair<double, double>{f_.eval_precise(s), f_.eval(s).dh}; },
+                         lo, hi, vlo.h, x, tol_root_ * 0.5 + 2 * kEps * std::abs(x));
+    }
+    push(x);
   }
 
   void push(double s) {
-    if (n_ < cap_) out_[n_++] = s;
+    if (n_ < 4) out_[n_++] = s;
   }
 
   const TorusFactor& f_;
   double* out_;
-  int cap_;
+  double tol_root_, tol_extremum_;
   int n_ = 0;
 };
 
@@ -268,7 +283,17 @@ int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3
   const double w = std::sqrt(disc);
   double lo = (-b - w) / f.dd();
   double hi = (-b + w) / f.dd();
-  if (hi < s_min || lo > s_max) return 0;
+  // The torus lies in the slab |z| <= r: clip the chord to it.
+  const double zo = o[2].hi + o[2].lo, slab = f.minor() * (1 + 1e-9) + 1e-300;
+  if (d[2] != 0) {
+    double z_lo = (-slab - zo) / d[2], z_hi = (slab - zo) / d[2];
+    if (z_lo > z_hi) std::swap(z_lo, z_hi);
+    lo = std::max(lo, z_lo);
+    hi = std::min(hi, z_hi);
+  } else if (std::abs(zo) > slab) {
+    return 0;
+  }
+  if (hi < lo || hi < s_min || lo > s_max) return 0;
 
   // Breakpoints of convexity: the axis crossing when K = 0 (a kink of rho),
   // else for h_out the two points where rho^3 = R K / |d|^2.
@@ -291,7 +316,7 @@ int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3
   }
   cuts[ncut] = hi;
 
-  RootCollector collector(f, out, 4);
+  RootCollector collector(f, out, f.minor() / std::sqrt(f.dd()));
   for (int i = 0; i < ncut; ++i) {
     if (cuts[i + 1] < s_min || cuts[i] > s_max) continue;
     collector.piece(cuts[i], cuts[i + 1], i + 1 == ncut);

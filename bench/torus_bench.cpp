@@ -1,0 +1,92 @@
+// ns per ray-torus intersection, per solver (docs/torus.md records the figures).
+//   mixed:   rays from 2-6 sizes away aimed at random points of the torus's
+//            bounding box, hits and misses as a camera sees them;
+//   hits:    the subset of those rays that hit;
+//   nearest: the renderer's query, the nearest root in (0, inf), mixed set.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "toroid/shapes/torus_intersect.h"
+
+namespace {
+
+constexpr double kR = 1.0, kr = 0.25;
+
+struct BenchRay {
+  double o[3], d[3];
+};
+
+std::vector<BenchRay> make_rays(bool hits_only) {
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<BenchRay> rays;
+  const double size = kR + kr;
+  while (rays.size() < 4096) {
+    double dir[3];
+    double len2 = 0;
+    do {
+      for (double& c : dir) c = u(rng);
+      len2 = dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2];
+    } while (len2 > 1 || len2 < 1e-6);
+    const double dist = (4 + 2 * u(rng)) * size / std::sqrt(len2);
+    BenchRay r;
+    const double target[3] = {u(rng) * size, u(rng) * size, u(rng) * kr};
+    for (int i = 0; i < 3; ++i) {
+      r.o[i] = dir[i] * dist;
+      r.d[i] = target[i] - r.o[i];
+    }
+    const double n = std::sqrt(r.d[0] * r.d[0] + r.d[1] * r.d[1] + r.d[2] * r.d[2]);
+    for (double& c : r.d) c /= n;
+    double t[4];
+    if (hits_only && toroid::intersect_torus(kR, kr, r.o, r.d, t) == 0) continue;
+    rays.push_back(r);
+  }
+  return rays;
+}
+
+const std::vector<BenchRay>& rays(bool hits_only) {
+  static const std::vector<BenchRay> mixed = make_rays(false), hits = make_rays(true);
+  return hits_only ? hits : mixed;
+}
+
+void BM_AllRoots(benchmark::State& state, toroid::QuarticSolver solver, bool hits_only) {
+  const auto& rs = rays(hits_only);
+  size_t i = 0;
+  double t[4];
+  for (auto _ : state) {
+    const BenchRay& r = rs[i++ & (rs.size() - 1)];
+    benchmark::DoNotOptimize(toroid::intersect_torus(kR, kr, r.o, r.d, t, solver));
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void BM_Nearest(benchmark::State& state, toroid::QuarticSolver solver) {
+  const auto& rs = rays(false);
+  size_t i = 0;
+  double t = 0;
+  for (auto _ : state) {
+    const BenchRay& r = rs[i++ & (rs.size() - 1)];
+    benchmark::DoNotOptimize(toroid::intersect_torus_nearest(kR, kr, r.o, r.d, 1e-9,
+                                                             std::numeric_limits<double>::infinity(), &t, solver));
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+using toroid::QuarticSolver;
+BENCHMARK_CAPTURE(BM_AllRoots, default_mixed, QuarticSolver::Default, false);
+BENCHMARK_CAPTURE(BM_AllRoots, ferrari_mixed, QuarticSolver::Ferrari, false);
+BENCHMARK_CAPTURE(BM_AllRoots, tianheng_mixed, QuarticSolver::Tianheng, false);
+BENCHMARK_CAPTURE(BM_AllRoots, default_hits, QuarticSolver::Default, true);
+BENCHMARK_CAPTURE(BM_AllRoots, ferrari_hits, QuarticSolver::Ferrari, true);
+BENCHMARK_CAPTURE(BM_AllRoots, tianheng_hits, QuarticSolver::Tianheng, true);
+BENCHMARK_CAPTURE(BM_Nearest, default_mixed, QuarticSolver::Default);
+BENCHMARK_CAPTURE(BM_Nearest, ferrari_mixed, QuarticSolver::Ferrari);
+BENCHMARK_CAPTURE(BM_Nearest, tianheng_mixed, QuarticSolver::Tianheng);
+
+}  // namespace
