@@ -1,0 +1,52 @@
+// The seed paper's closed-form quartic solver (after Fan Shengjin and
+// Shen Tianheng): its discriminant quantities and case table, exposed so that
+// tests can check which branch a polynomial takes. The solver itself is
+// solve_quartic_tianheng in quartic.h; docs/torus.md derives every formula.
+#pragma once
+
+namespace toroid {
+
+// The quantities of a x^4 + b x^3 + c x^2 + d x + e. With y = 4 a x + b the
+// quartic becomes (y^2 - D)^2 = 4 (2 E y + F), and v = (y_1 + y_j)^2 / 4
+// (j = 2, 3, 4) are the roots of the resolvent v^3 - D v^2 + F v - E^2 = 0,
+// whose Shengjin discriminants are A, B, C and Delta.
+//   D = 3b^2 - 8ac
+//   E = -b^3 + 4abc - 8a^2 d
+//   F = 3b^4 + 16a^2 c^2 - 16ab^2 c + 16a^2 bd - 64a^3 e
+//   A = D^2 - 3F,  B = DF - 9E^2,  C = F^2 - 3DE^2,  Delta = B^2 - 4AC
+// Each m_X is a first-order bound, in units of the unit roundoff, on the
+// rounding error of X: the magnitudes of the terms that cancel in X plus the
+// errors it inherits from the quantities it is made of. X counts as zero when
+// |X| <= kTianhengTolerance * m_X.
+struct TianhengQuantities {
+  double D, E, F, A, B, C, Delta;
+  double mD, mE, mF, mA, mB, mC, mDelta;
+
+  bool D_zero() const;
+  bool E_zero() const;
+  bool F_zero() const;
+  bool A_zero() const;
+  bool B_zero() const;
+  bool C_zero() const;
+  bool Delta_zero() const;
+};
+
+// Multiplier of DBL_EPSILON * m_X in the zero tests (see above).
+inline constexpr double kTianhengTolerance = 16;
+
+TianhengQuantities tianheng_quantities(double a, double b, double c, double d, double e);
+
+// The paper's case table, in the order it is tested.
+enum class TianhengCase {
+  QuadrupleRoot = 1,   // 1. D = E = F = 0: x = -b/(4a) four times
+  TripleRoot = 2,      // 2. A = B = C = 0 (DEF != 0): one simple, one triple root
+  TwoDoubleRoots = 3,  // 3. E = F = 0, D != 0: two double roots, real iff D > 0
+  OneDoubleRoot = 4,   // 4. Delta = 0, ABC != 0: a real double root and two more
+  DeltaPositive = 5,   // 5. Delta > 0: two simple real roots and a complex pair
+  DeltaNegative = 6,   // 6. Delta < 0: four simple real roots (D > 0, F > 0) or none
+};
+
+TianhengCase classify_tianheng(double a, double b, double c, double d, double e);
+TianhengCase classify_tianheng(const TianhengQuantities& q);
+
+}  // namespace toroid
