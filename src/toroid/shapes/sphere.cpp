@@ -23,4 +23,11 @@ void Sphere::local_intersect(const Ray& ray, Intersections& xs) const {
 
 Tuple Sphere::local_normal_at(const Tuple& p, const Intersection&) const { return vector(p.x, p.y, p.z); }
 
+std::shared_ptr<Sphere> glass_sphere() {
+  auto s = std::make_shared<Sphere>();
+  s->material.transparency = 1.0;
+  s->material.refractive_index = 1.5;
+  return s;
+}
+
 }  // namespace toroid

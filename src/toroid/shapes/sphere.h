@@ -1,6 +1,8 @@
 // Unit sphere at the origin (RTC chapter 5).
 #pragma once
 
+#include <memory>
+
 #include "toroid/shapes/shape.h"
 
 namespace toroid {
@@ -11,5 +13,8 @@ class Sphere : public Shape {
   void local_intersect(const Ray& ray, Intersections& xs) const override;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };
+
+// A unit sphere of glass: transparency 1, refractive index 1.5 (RTC chapter 11).
+std::shared_ptr<Sphere> glass_sphere();
 
 }  // namespace toroid

@@ -1,0 +1,76 @@
+#include "toroid/render/computations.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include "toroid/shapes/shape.h"
+
+namespace toroid {
+
+namespace {
+
+bool same(const Intersection& a, const Intersection& b) { return a.t == b.t && a.object == b.object; }
+
+// The containers algorithm: walk the sorted intersections, tracking which
+// objects the ray is inside, up to the hit.
+void refractive_indices(const Intersection& hit, std::span<const Intersection> xs, Computations& comps) {
+  thread_local std::vector<const Shape*> containers;
+  containers.clear();
+  for (const Intersection& x : xs) {
+    const bool is_hit = same(x, hit);
+    if (is_hit) comps.n1 = containers.empty() ? 1.0 : containers.back()->material.refractive_index;
+    const auto found = std::find(containers.begin(), containers.end(), x.object);
+    if (found != containers.end())
+      containers.erase(found);
+    else
+      containers.push_back(x.object);
+    if (is_hit) {
+      comps.n2 = containers.empty() ? 1.0 : containers.back()->material.refractive_index;
+      return;
+    }
+  }
+}
+
+Computations prepare(const Intersection& hit, const Ray& ray, std::span<const Intersection> xs) {
+  Computations comps;
+  comps.t = hit.t;
+  comps.object = hit.object;
+  comps.point = ray.position(hit.t);
+  comps.eyev = -ray.direction;
+  comps.normalv = hit.object->normal_at(comps.point, hit);
+  if (dot(comps.normalv, comps.eyev) < 0) {
+    comps.inside = true;
+    comps.normalv = -comps.normalv;
+  }
+  comps.reflectv = reflect(ray.direction, comps.normalv);
+  comps.over_point = comps.point + comps.normalv * kShadowBias;
+  comps.under_point = comps.point - comps.normalv * kShadowBias;
+  refractive_indices(hit, xs, comps);
+  return comps;
+}
+
+}  // namespace
+
+Computations prepare_computations(const Intersection& hit, const Ray& ray, const Intersections& xs) {
+  return prepare(hit, ray, xs);
+}
+
+Computations prepare_computations(const Intersection& hit, const Ray& ray) {
+  return prepare(hit, ray, std::span<const Intersection>(&hit, 1));
+}
+
+double schlick(const Computations& comps) {
+  double cos = dot(comps.eyev, comps.normalv);
+  if (comps.n1 > comps.n2) {
+    const double n = comps.n1 / comps.n2;
+    const double sin2_t = n * n * (1.0 - cos * cos);
+    if (sin2_t > 1.0) return 1.0;
+    cos = std::sqrt(1.0 - sin2_t);
+  }
+  const double r0 = std::pow((comps.n1 - comps.n2) / (comps.n1 + comps.n2), 2);
+  return r0 + (1 - r0) * std::pow(1 - cos, 5);
+}
+
+}  // namespace toroid

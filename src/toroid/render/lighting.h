@@ -1,0 +1,27 @@
+// Phong reflection (RTC chapters 6, 8 and 10).
+#pragma once
+
+#include "toroid/math/color.h"
+#include "toroid/math/tuple.h"
+#include "toroid/render/light.h"
+#include "toroid/render/material.h"
+
+namespace toroid {
+
+class Shape;
+
+// The colour of `point` on `object` lit by `light`, seen along `eyev` (unit,
+// towards the eye) with surface normal `normalv` (unit). The surface colour
+// is the material's pattern at the point when it has one, else its colour.
+// `light_intensity` in [0, 1] is the fraction of the light that reaches the
+// point (0: in shadow, ambient only; between: a partly covered area light).
+Color lighting(const Material& material, const Shape& object, const PointLight& light, const Tuple& point,
+               const Tuple& eyev, const Tuple& normalv, double light_intensity);
+
+// The book's form: in_shadow == true means no light reaches the point.
+inline Color lighting(const Material& material, const Shape& object, const PointLight& light, const Tuple& point,
+                      const Tuple& eyev, const Tuple& normalv, bool in_shadow = false) {
+  return lighting(material, object, light, point, eyev, normalv, in_shadow ? 0.0 : 1.0);
+}
+
+}  // namespace toroid

@@ -1,0 +1,49 @@
+#include "toroid/render/pattern.h"
+
+#include <cmath>
+
+#include "toroid/shapes/shape.h"
+
+namespace toroid {
+
+void Pattern::set_transform(const Matrix4& m) {
+  transform_ = m;
+  inverse_ = inverse(m);
+}
+
+Color Pattern::pattern_at_shape(const Shape& shape, const Tuple& world_point) const {
+  return pattern_at_object(shape.world_to_object(world_point));
+}
+
+namespace {
+
+// Far below any pattern feature size, far above the rounding noise of a
+// surface point (about 1e-16 relative to the scene's coordinates).
+constexpr double kPatternEpsilon = 1e-9;
+
+bool is_even(double floored) { return std::fmod(floored, 2.0) == 0.0; }
+
+}  // namespace
+
+double pattern_floor(double v) { return std::floor(v + kPatternEpsilon); }
+
+Color StripePattern::pattern_at(const Tuple& p) const { return is_even(pattern_floor(p.x)) ? a() : b(); }
+
+Color GradientPattern::pattern_at(const Tuple& p) const {
+  const double fraction = p.x - std::floor(p.x);
+  return a() + (b() - a()) * fraction;
+}
+
+Color RingPattern::pattern_at(const Tuple& p) const {
+  return is_even(pattern_floor(std::sqrt(p.x * p.x + p.z * p.z))) ? a() : b();
+}
+
+Color CheckersPattern::pattern_at(const Tuple& p) const {
+  return is_even(pattern_floor(p.x) + pattern_floor(p.y) + pattern_floor(p.z)) ? a() : b();
+}
+
+Color BlendedPattern::pattern_at(const Tuple& p) const {
+  return (a_->pattern_at_object(p) + b_->pattern_at_object(p)) * 0.5;
+}
+
+}  // namespace toroid

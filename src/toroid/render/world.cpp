@@ -1,0 +1,98 @@
+#include "toroid/render/world.h"
+
+#include <cmath>
+
+#include "toroid/math/transform.h"
+#include "toroid/render/lighting.h"
+#include "toroid/shapes/shape.h"
+#include "toroid/shapes/sphere.h"
+
+namespace toroid {
+
+World default_world() {
+  World w;
+  w.lights.push_back(PointLight{point(-10, 10, -10), Color{1, 1, 1}});
+  auto s1 = std::make_shared<Sphere>();
+  s1->material.color = Color{0.8, 1.0, 0.6};
+  s1->material.diffuse = 0.7;
+  s1->material.specular = 0.2;
+  auto s2 = std::make_shared<Sphere>();
+  s2->set_transform(scaling(0.5, 0.5, 0.5));
+  w.objects.push_back(std::move(s1));
+  w.objects.push_back(std::move(s2));
+  return w;
+}
+
+void intersect_world(const World& world, const Ray& ray, Intersections& xs) {
+  xs.clear();
+  for (const auto& object : world.objects) object->intersect(ray, xs);
+  sort_intersections(xs);
+}
+
+bool is_shadowed(const World& world, const Tuple& point, const PointLight& light) {
+  const Tuple to_light = light.position - point;
+  const double distance = magnitude(to_light);
+  const Ray ray{point, to_light / distance};
+  // Separate from color_at's buffer; the caller's state stays untouched.
+  thread_local Intersections xs;
+  for (const auto& object : world.objects) {
+    if (!object->casts_shadow) continue;
+    xs.clear();
+    object->intersect(ray, xs);
+    // Any blocker between the point and the light will do: no sort needed.
+    for (const Intersection& x : xs)
+      if (x.t >= 0 && x.t < distance && x.object->casts_shadow) return true;
+  }
+  return false;
+}
+
+Color shade_hit(const World& world, const Computations& comps, int remaining) {
+  const Material& m = comps.object->material;
+  Color surface = kBlack;
+  for (const PointLight& light : world.lights) {
+    const bool shadowed = is_shadowed(world, comps.over_point, light);
+    surface += lighting(m, *comps.object, light, comps.over_point, comps.eyev, comps.normalv, shadowed);
+  }
+  const Color reflected = reflected_color(world, comps, remaining);
+  const Color refracted = refracted_color(world, comps, remaining);
+  if (m.reflective > 0 && m.transparency > 0) {
+    const double reflectance = schlick(comps);
+    return surface + reflected * reflectance + refracted * (1 - reflectance);
+  }
+  return surface + reflected + refracted;
+}
+
+Color color_at(const World& world, const Ray& ray, int remaining) {
+  // One buffer per thread, reused across rays. Recursion is safe: the
+  // intersections are consumed by prepare_computations before shade_hit
+  // can cast (and so overwrite them with) the next ray.
+  thread_local Intersections xs;
+  intersect_world(world, ray, xs);
+  const Intersection* h = hit(xs);
+  if (h == nullptr) return kBlack;
+  const Computations comps = prepare_computations(*h, ray, xs);
+  return shade_hit(world, comps, remaining);
+}
+
+Color reflected_color(const World& world, const Computations& comps, int remaining) {
+  const double reflective = comps.object->material.reflective;
+  if (remaining <= 0 || reflective == 0) return kBlack;
+  const Ray reflect_ray{comps.over_point, comps.reflectv};
+  return color_at(world, reflect_ray, remaining - 1) * reflective;
+}
+
+Color refracted_color(const World& world, const Computations& comps, int remaining) {
+  const double transparency = comps.object->material.transparency;
+  if (remaining <= 0 || transparency == 0) return kBlack;
+  // Snell's law: n1 sin(i) = n2 sin(t).
+  const double n_ratio = comps.n1 / comps.n2;
+  const double cos_i = dot(comps.eyev, comps.normalv);
+  const double sin2_t = n_ratio * n_ratio * (1 - cos_i * cos_i);
+  if (sin2_t > 1) return kBlack;  // total internal reflection
+  const double cos_t = std::sqrt(1.0 - sin2_t);
+  const Tuple direction = comps.normalv * (n_ratio * cos_i - cos_t) - comps.eyev * n_ratio;
+  const Ray refract_ray{comps.under_point, direction};
+  return color_at(world, refract_ray, remaining - 1) * transparency;
+}
+
+}  // namespace toroid

@@ -1,0 +1,54 @@
+// A scene: shapes and lights, and the recursive shading of rays (RTC
+// chapters 7, 8 and 11).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "toroid/math/color.h"
+#include "toroid/render/computations.h"
+#include "toroid/render/intersection.h"
+#include "toroid/render/light.h"
+#include "toroid/render/ray.h"
+
+namespace toroid {
+
+class Shape;
+
+struct World {
+  std::vector<std::shared_ptr<Shape>> objects;
+  std::vector<PointLight> lights;  // their contributions add up
+};
+
+// How many bounces color_at follows by default (reflection and refraction).
+inline constexpr int kDefaultRemaining = 5;
+
+// The book's test world: a light at (-10, 10, -10), a unit sphere of colour
+// (0.8, 1.0, 0.6) (diffuse 0.7, specular 0.2) and a concentric sphere scaled
+// by 0.5.
+World default_world();
+
+// Replaces the contents of `xs` with every intersection of `ray` with the
+// world's objects, sorted by t. Reuse one buffer across rays to avoid
+// allocating.
+void intersect_world(const World& world, const Ray& ray, Intersections& xs);
+
+// Whether an object that casts shadows lies between `point` and the light.
+bool is_shadowed(const World& world, const Tuple& point, const PointLight& light);
+
+// Surface colour (every light) plus reflected and refracted colour, with
+// `remaining` bounces left.
+Color shade_hit(const World& world, const Computations& comps, int remaining = kDefaultRemaining);
+
+// The colour seen along `ray`: black if it hits nothing.
+Color color_at(const World& world, const Ray& ray, int remaining = kDefaultRemaining);
+
+// Colour arriving along the reflection of the eye ray; black when the
+// material is not reflective or remaining <= 0.
+Color reflected_color(const World& world, const Computations& comps, int remaining = kDefaultRemaining);
+
+// Colour arriving through the surface; black when the material is opaque,
+// remaining <= 0, or under total internal reflection.
+Color refracted_color(const World& world, const Computations& comps, int remaining = kDefaultRemaining);
+
+}  // namespace toroid
