@@ -2,6 +2,8 @@
 // parent group. Subclasses intersect and shade in their own object space.
 #pragma once
 
+#include <cstddef>
+
 #include "toroid/math/matrix.h"
 #include "toroid/render/intersection.h"
 #include "toroid/render/material.h"
@@ -46,8 +48,24 @@ class Shape {
   // CSG: whether `other` is this shape or one of its descendants.
   virtual bool includes(const Shape* other) const { return other == this; }
 
+  // BVH (bonus chapter): groups split their children into a hierarchy of
+  // subgroups with at most about `threshold` children each; CSG divides its
+  // operands; primitives have nothing to divide.
+  virtual void divide(std::size_t threshold) { (void)threshold; }
+
+  // Groups and CSG cache their bounds. Call this after changing something that
+  // moves this shape's box (cylinder minimum, ...) once it has a parent;
+  // set_transform and Group::add_child call it themselves. Setup time only.
+  void bounds_changed() const {
+    if (parent) parent->child_bounds_changed();
+  }
+
   virtual void local_intersect(const Ray& local_ray, Intersections& xs) const = 0;
   virtual Tuple local_normal_at(const Tuple& local_point, const Intersection& hit) const = 0;
+
+ protected:
+  // Told by a child (see bounds_changed) that its box may have moved.
+  virtual void child_bounds_changed() const {}
 
  private:
   Matrix4 transform_ = Matrix4::identity();

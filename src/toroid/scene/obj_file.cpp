@@ -1,0 +1,178 @@
+#include "toroid/scene/obj_file.h"
+
+#include <tiny_obj_loader.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "toroid/shapes/smooth_triangle.h"
+#include "toroid/shapes/triangle.h"
+
+namespace toroid {
+
+namespace {
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// Rewrites the vertex references of "f" lines without their texture index
+// ("v/t/n" -> "v//n", "v/t" -> "v"). Toroid has no use for texture
+// coordinates, and tinyobjloader rejects an index of 0, which the book's
+// fixtures use. Keeps one output line per input line, so line numbers in
+// tinyobjloader's messages stay right.
+std::string drop_texture_indices(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(pos, end - pos);
+    std::size_t i = 0;
+    while (i < line.size() && is_blank(line[i])) ++i;
+    if (i + 1 < line.size() && line[i] == 'f' && is_blank(line[i + 1])) {
+      out.append(line.substr(0, i + 1));
+      i += 1;
+      while (i < line.size()) {
+        if (is_blank(line[i])) {
+          out.push_back(line[i++]);
+          continue;
+        }
+        std::size_t j = i;
+        while (j < line.size() && !is_blank(line[j])) ++j;
+        const std::string_view ref = line.substr(i, j - i);
+        const std::size_t s1 = ref.find('/');
+        if (s1 == std::string_view::npos) {
+          out.append(ref);
+        } else {
+          out.append(ref.substr(0, s1));
+          const std::size_t s2 = ref.find('/', s1 + 1);
+          if (s2 != std::string_view::npos) {
+            out.append("//");
+            out.append(ref.substr(s2 + 1));
+          }
+        }
+        i = j;
+      }
+    } else {
+      out.append(line);
+    }
+    if (end < text.size()) out.push_back('\n');
+    pos = end + 1;
+  }
+  return out;
+}
+
+// "source:line: message" when tinyobjloader's message names a line.
+[[noreturn]] void throw_parse_error(const std::string& source, std::string message) {
+  while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
+  std::smatch m;
+  static const std::regex kLine(R"(line (\d+))");
+  std::string where = source;
+  if (std::regex_search(message, m, kLine)) where.append(1, ':').append(m[1].first, m[1].second);
+  throw ObjError(where + ": " + message);
+}
+
+Tuple fetch(const std::vector<tinyobj::real_t>& xyz, int index) {
+  const auto i = static_cast<std::size_t>(index) * 3;
+  return {static_cast<double>(xyz[i]), static_cast<double>(xyz[i + 1]), static_cast<double>(xyz[i + 2]), 0.0};
+}
+
+}  // namespace
+
+std::shared_ptr<Group> ObjFile::group(std::string_view name) const {
+  for (const auto& [n, g] : groups)
+    if (n == name) return g;
+  return nullptr;
+}
+
+ObjFile parse_obj(std::string_view text, const std::string& source) {
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = false;  // the book's fan order, below
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromString(drop_texture_indices(text), "", config))
+    throw_parse_error(source, reader.Error().empty() ? "cannot parse OBJ" : reader.Error());
+
+  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  ObjFile obj;
+  const std::size_t nv = attrib.vertices.size() / 3;
+  const std::size_t nn = attrib.normals.size() / 3;
+  obj.vertices.reserve(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    Tuple p = fetch(attrib.vertices, static_cast<int>(i));
+    p.w = 1.0;
+    obj.vertices.push_back(p);
+  }
+  obj.normals.reserve(nn);
+  for (std::size_t i = 0; i < nn; ++i) obj.normals.push_back(fetch(attrib.normals, static_cast<int>(i)));
+
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    std::shared_ptr<Group> group;
+    if (shape.name.empty()) {
+      group = obj.default_group;
+    } else {
+      group = obj.group(shape.name);
+      if (!group) {
+        group = std::make_shared<Group>();
+        obj.groups.emplace_back(shape.name, group);
+      }
+    }
+    const auto& indices = shape.mesh.indices;
+    std::size_t base = 0;
+    for (const unsigned int n : shape.mesh.num_face_vertices) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const tinyobj::index_t& idx = indices[base + k];
+        if (idx.vertex_index < 0 || static_cast<std::size_t>(idx.vertex_index) >= nv)
+          throw ObjError(source + ": face refers to vertex " + std::to_string(idx.vertex_index + 1) + ", but " +
+                         std::to_string(nv) + " vertices are defined");
+        if (idx.normal_index >= 0 && static_cast<std::size_t>(idx.normal_index) >= nn)
+          throw ObjError(source + ": face refers to normal " + std::to_string(idx.normal_index + 1) + ", but " +
+                         std::to_string(nn) + " normals are defined");
+      }
+      // Fan from the first vertex: (1, 2, 3), (1, 3, 4), ...
+      for (std::size_t k = 1; k + 1 < n; ++k) {
+        const tinyobj::index_t& a = indices[base];
+        const tinyobj::index_t& b = indices[base + k];
+        const tinyobj::index_t& c = indices[base + k + 1];
+        const Tuple& p1 = obj.vertices[static_cast<std::size_t>(a.vertex_index)];
+        const Tuple& p2 = obj.vertices[static_cast<std::size_t>(b.vertex_index)];
+        const Tuple& p3 = obj.vertices[static_cast<std::size_t>(c.vertex_index)];
+        if (a.normal_index >= 0 && b.normal_index >= 0 && c.normal_index >= 0) {
+          group->add_child(std::make_shared<SmoothTriangle>(p1, p2, p3,
+                                                            obj.normals[static_cast<std::size_t>(a.normal_index)],
+                                                            obj.normals[static_cast<std::size_t>(b.normal_index)],
+                                                            obj.normals[static_cast<std::size_t>(c.normal_index)]));
+        } else {
+          group->add_child(std::make_shared<Triangle>(p1, p2, p3));
+        }
+      }
+      base += n;
+    }
+  }
+  return obj;
+}
+
+ObjFile parse_obj_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ObjError(path.string() + ": cannot open OBJ file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw ObjError(path.string() + ": cannot read OBJ file");
+  return parse_obj(text.str(), path.string());
+}
+
+std::shared_ptr<Group> obj_to_group(const ObjFile& obj) {
+  auto root = std::make_shared<Group>();
+  if (!obj.default_group->empty()) root->add_child(obj.default_group);
+  for (const auto& [name, group] : obj.groups) root->add_child(group);
+  return root;
+}
+
+std::shared_ptr<Group> load_obj(const std::filesystem::path& path, std::size_t bvh_threshold) {
+  auto root = obj_to_group(parse_obj_file(path));
+  root->divide(bvh_threshold);
+  return root;
+}
+
+}  // namespace toroid

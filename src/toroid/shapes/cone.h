@@ -1,0 +1,21 @@
+// Double-napped cone x^2 + z^2 = y^2 around the y axis (RTC chapter 13),
+// optionally truncated to minimum < y < maximum and closed with caps.
+#pragma once
+
+#include "toroid/shapes/shape.h"
+
+namespace toroid {
+
+class Cone : public Shape {
+ public:
+  // Changing these after the cone joins a group: call bounds_changed().
+  double minimum = -BoundingBox::kInf;
+  double maximum = BoundingBox::kInf;
+  bool closed = false;
+
+  BoundingBox bounds() const override;
+  void local_intersect(const Ray& ray, Intersections& xs) const override;
+  Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
+};
+
+}  // namespace toroid

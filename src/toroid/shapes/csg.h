@@ -1,0 +1,57 @@
+// Constructive solid geometry (RTC chapter 16): the union, intersection or
+// difference of two shapes.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+
+#include "toroid/shapes/shape.h"
+
+namespace toroid {
+
+enum class CsgOp { Union, Intersection, Difference };
+
+// The book's rule: whether an intersection survives, given whether it is on
+// the left operand (lhit) and whether the ray is inside the left (inl) and
+// the right (inr) operand at that point.
+bool intersection_allowed(CsgOp op, bool lhit, bool inl, bool inr);
+
+class Csg : public Shape {
+ public:
+  // Takes shared ownership of both operands and sets their parent.
+  Csg(CsgOp op, std::shared_ptr<Shape> left, std::shared_ptr<Shape> right);
+
+  CsgOp operation() const { return op_; }
+  const std::shared_ptr<Shape>& left() const { return left_; }
+  const std::shared_ptr<Shape>& right() const { return right_; }
+
+  // Union of the operands' boxes in this shape's space; cached.
+  BoundingBox bounds() const override { return bounds_; }
+
+  // Tests the box, gathers both operands' intersections after the ones
+  // already in xs, sorts just those and keeps those on the CSG surface.
+  // No allocation beyond xs's own growth.
+  void local_intersect(const Ray& ray, Intersections& xs) const override;
+  // CSG has no surface of its own: hits always name a primitive.
+  // Throws std::logic_error.
+  Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
+
+  // Whether `other` is this CSG or one of its descendants.
+  bool includes(const Shape* other) const override;
+  void divide(std::size_t threshold) override;
+
+  // Keeps, in place and in order, the intersections xs[first...] allowed by
+  // the operation and drops the rest. Precondition: xs[first...] is sorted by
+  // t and every object in it lies within left() or right().
+  void filter_intersections(Intersections& xs, std::size_t first = 0) const;
+
+ protected:
+  void child_bounds_changed() const override;
+
+ private:
+  CsgOp op_;
+  std::shared_ptr<Shape> left_, right_;
+  mutable BoundingBox bounds_;  // refreshed by child_bounds_changed at setup time
+};
+
+}  // namespace toroid

@@ -1,0 +1,26 @@
+#include "toroid/shapes/cube.h"
+
+#include <cmath>
+
+namespace toroid {
+
+void Cube::local_intersect(const Ray& ray, Intersections& xs) const {
+  // The cube is its own bounding box: the same slab test, keeping both ends.
+  double tmin = -BoundingBox::kInf;
+  double tmax = BoundingBox::kInf;
+  detail::clip_slab(-1, 1, ray.origin.x, 1.0 / ray.direction.x, tmin, tmax);
+  detail::clip_slab(-1, 1, ray.origin.y, 1.0 / ray.direction.y, tmin, tmax);
+  detail::clip_slab(-1, 1, ray.origin.z, 1.0 / ray.direction.z, tmin, tmax);
+  if (tmin > tmax || std::isinf(tmin) || std::isinf(tmax)) return;
+  xs.push_back({tmin, this});
+  xs.push_back({tmax, this});
+}
+
+Tuple Cube::local_normal_at(const Tuple& p, const Intersection&) const {
+  const double ax = std::abs(p.x), ay = std::abs(p.y), az = std::abs(p.z);
+  if (ax >= ay && ax >= az) return vector(p.x, 0, 0);
+  if (ay >= az) return vector(0, p.y, 0);
+  return vector(0, 0, p.z);
+}
+
+}  // namespace toroid

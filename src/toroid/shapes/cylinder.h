@@ -1,0 +1,21 @@
+// Unit-radius cylinder around the y axis (RTC chapter 13), optionally
+// truncated to minimum < y < maximum and closed with caps.
+#pragma once
+
+#include "toroid/shapes/shape.h"
+
+namespace toroid {
+
+class Cylinder : public Shape {
+ public:
+  // Changing these after the cylinder joins a group: call bounds_changed().
+  double minimum = -BoundingBox::kInf;
+  double maximum = BoundingBox::kInf;
+  bool closed = false;
+
+  BoundingBox bounds() const override { return {point(-1, minimum, -1), point(1, maximum, 1)}; }
+  void local_intersect(const Ray& ray, Intersections& xs) const override;
+  Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
+};
+
+}  // namespace toroid

@@ -1,0 +1,98 @@
+#include "toroid/shapes/group.h"
+
+#include <stdexcept>
+
+namespace toroid {
+
+bool is_within(const Shape* shape, const Shape& ancestor) {
+  for (const Shape* s = shape; s != nullptr; s = s->parent)
+    if (s == &ancestor) return true;
+  return false;
+}
+
+void Group::attach(std::shared_ptr<Shape> child) {
+  child->parent = this;
+  bounds_.merge(child->parent_space_bounds());
+  children_.push_back(std::move(child));
+}
+
+void Group::add_child(std::shared_ptr<Shape> child) {
+  attach(std::move(child));
+  bounds_changed();
+}
+
+void Group::local_intersect(const Ray& ray, Intersections& xs) const {
+  if (!bounds_.intersects(ray)) return;
+  for (const auto& child : children_) child->intersect(ray, xs);
+}
+
+Tuple Group::local_normal_at(const Tuple&, const Intersection&) const {
+  throw std::logic_error("local_normal_at called on a group: groups have no surface");
+}
+
+bool Group::includes(const Shape* other) const { return is_within(other, *this); }
+
+void Group::recompute_bounds() const {
+  BoundingBox b;
+  for (const auto& child : children_) b.merge(child->parent_space_bounds());
+  bounds_ = b;
+}
+
+void Group::child_bounds_changed() const {
+  recompute_bounds();
+  bounds_changed();
+}
+
+// Leaves bounds_ as it was (now too large until the caller fixes it).
+std::pair<ShapeList, ShapeList> Group::take_partition() {
+  const auto [left_box, right_box] = bounds_.split();
+  ShapeList left, right, rest;
+  for (auto& child : children_) {
+    const BoundingBox b = child->parent_space_bounds();
+    if (left_box.contains_box(b)) {
+      left.push_back(std::move(child));
+    } else if (right_box.contains_box(b)) {
+      right.push_back(std::move(child));
+    } else {
+      rest.push_back(std::move(child));
+    }
+  }
+  children_ = std::move(rest);
+  return {std::move(left), std::move(right)};
+}
+
+std::pair<ShapeList, ShapeList> Group::partition_children() {
+  auto parts = take_partition();
+  recompute_bounds();
+  bounds_changed();
+  return parts;
+}
+
+std::shared_ptr<Group> Group::subgroup_of(ShapeList children) {
+  auto sub = std::make_shared<Group>();
+  for (auto& child : children) sub->attach(std::move(child));
+  return sub;
+}
+
+void Group::make_subgroup(ShapeList children) { add_child(subgroup_of(std::move(children))); }
+
+void Group::divide(std::size_t threshold) {
+  if (threshold <= children_.size()) {
+    const std::size_t count = children_.size();
+    const BoundingBox box = bounds_;
+    auto [left, right] = take_partition();
+    if (left.size() == count || right.size() == count) {
+      // Nothing separates them (all in one degenerate half): a subgroup of
+      // everything would only recurse forever, so keep them here.
+      children_ = left.empty() ? std::move(right) : std::move(left);
+    } else {
+      if (!left.empty()) attach(subgroup_of(std::move(left)));
+      if (!right.empty()) attach(subgroup_of(std::move(right)));
+    }
+    // The same shapes lie below this group, so its box is unchanged.
+    bounds_ = box;
+  }
+  for (const auto& child : children_) child->divide(threshold);
+}
+
+}  // namespace toroid
