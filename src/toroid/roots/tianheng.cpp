@@ -74,6 +74,13 @@ TianhengCase classify_tianheng(double a, double b, double c, double d, double e)
 
 int solve_quartic_tianheng(double a, double b, double c, double d, double e, double roots[4]) {
   if (a == 0) return solve_cubic(b, c, d, e, roots);
+  // D..F, A..C and Delta are homogeneous of degrees 2..12 in the coefficients,
+  // so Delta overflows once they pass about 2^85. Scaling every coefficient by
+  // the same power of two is exact and changes neither the roots nor any
+  // rounding, so do it first (the only departure from the paper's recipe).
+  const double big = std::max({std::fabs(a), std::fabs(b), std::fabs(c), std::fabs(d), std::fabs(e)});
+  const int k = std::ilogb(big);
+  a = std::scalbn(a, -k), b = std::scalbn(b, -k), c = std::scalbn(c, -k), d = std::scalbn(d, -k), e = std::scalbn(e, -k);
   const TianhengQuantities q = tianheng_quantities(a, b, c, d, e);
   const double D = q.D, E = q.E, F = q.F, A = q.A, B = q.B, Delta = q.Delta;
   double y[4];

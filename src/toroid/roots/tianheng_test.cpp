@@ -145,6 +145,20 @@ TEST(Tianheng, ZeroTestsAreRelative) {
   EXPECT_GT(noisy, 0);
 }
 
+TEST(Tianheng, HugeAndTinyCoefficientsAreScaledExactly) {
+  // Delta is of degree 12 in the coefficients: without the power-of-two
+  // normalisation it overflows for coefficients beyond about 2^85.
+  for (const QuarticCase& q : testing::branch_cases()) {
+    for (int k : {-300, -90, 90, 300}) {
+      double c[5];
+      for (int i = 0; i < 5; ++i) c[i] = std::ldexp(q.p.c[i], k);
+      double r[4];
+      const int n = solve_quartic_tianheng(c[0], c[1], c[2], c[3], c[4], r);
+      EXPECT_TRUE(RootsMatch(r, n, q.want, q.multiple ? kTolMultiple : kTolSimple)) << q.name << " 2^" << k;
+    }
+  }
+}
+
 TEST(Tianheng, RandomSweepAgainstMpfr) {
   double worst = 0;
   for (const QuarticCase& q : testing::random_cases(600, 20190101)) {
