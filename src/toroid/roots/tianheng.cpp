@@ -44,18 +44,18 @@ TianhengQuantities tianheng_quantities(double a, double b, double c, double d, d
   q.C = q.F * q.F - 3 * q.D * q.E * q.E;
   q.Delta = q.B * q.B - 4 * q.A * q.C;
 
-  // Error magnitudes: |terms| of each sum, plus (first order) the errors of
-  // the operands times the partial derivatives.
+  // Zero-test scales: the sum of the magnitudes of the terms that cancel in
+  // each quantity's own formula (see tianheng.h for why the errors inherited
+  // from D, E, F are deliberately not added).
   const double fa = std::fabs(a), fb = std::fabs(b), fc = std::fabs(c), fd = std::fabs(d), fe = std::fabs(e);
-  const double D = std::fabs(q.D), E = std::fabs(q.E), F = std::fabs(q.F);
-  const double A = std::fabs(q.A), B = std::fabs(q.B), C = std::fabs(q.C);
+  const double D = std::fabs(q.D), E2 = q.E * q.E, F = std::fabs(q.F);
   q.mD = 3 * bb + 8 * fa * fc;
   q.mE = bb * fb + 4 * fa * fb * fc + 8 * aa * fd;
   q.mF = 3 * bb * bb + 16 * aa * c * c + 16 * fa * bb * fc + 16 * aa * fb * fd + 64 * aa * fa * fe;
-  q.mA = D * D + 3 * F + 2 * D * q.mD + 3 * q.mF;
-  q.mB = D * F + 9 * E * E + F * q.mD + D * q.mF + 18 * E * q.mE;
-  q.mC = F * F + 3 * D * E * E + 2 * F * q.mF + 3 * E * E * q.mD + 6 * D * E * q.mE;
-  q.mDelta = B * B + 4 * A * C + 2 * B * q.mB + 4 * C * q.mA + 4 * A * q.mC;
+  q.mA = D * D + 3 * F;
+  q.mB = D * F + 9 * E2;
+  q.mC = F * F + 3 * D * E2;
+  q.mDelta = q.B * q.B + 4 * std::fabs(q.A * q.C);
   return q;
 }
 
@@ -74,6 +74,13 @@ TianhengCase classify_tianheng(double a, double b, double c, double d, double e)
 
 int solve_quartic_tianheng(double a, double b, double c, double d, double e, double roots[4]) {
   if (a == 0) return solve_cubic(b, c, d, e, roots);
+  // D..F, A..C and Delta are homogeneous of degrees 2..12 in the coefficients,
+  // so Delta overflows once they pass about 2^85. Scaling every coefficient by
+  // the same power of two is exact and changes neither the roots nor any
+  // rounding, so do it first (the only departure from the paper's recipe).
+  const double big = std::max({std::fabs(a), std::fabs(b), std::fabs(c), std::fabs(d), std::fabs(e)});
+  const int k = std::ilogb(big);
+  a = std::scalbn(a, -k), b = std::scalbn(b, -k), c = std::scalbn(c, -k), d = std::scalbn(d, -k), e = std::scalbn(e, -k);
   const TianhengQuantities q = tianheng_quantities(a, b, c, d, e);
   const double D = q.D, E = q.E, F = q.F, A = q.A, B = q.B, Delta = q.Delta;
   double y[4];
