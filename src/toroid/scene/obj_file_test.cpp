@@ -199,6 +199,19 @@ std::size_t depth(const Shape& s) {
   return d + 1;
 }
 
+// The most primitives any group in the hierarchy holds directly.
+std::size_t widest_leaf(const Group& g) {
+  std::size_t direct = 0, widest = 0;
+  for (const auto& c : g.children()) {
+    if (const auto* sub = dynamic_cast<const Group*>(c.get())) {
+      widest = std::max(widest, widest_leaf(*sub));
+    } else {
+      ++direct;
+    }
+  }
+  return std::max(widest, direct);
+}
+
 TEST(ObjFileParser, LoadingALargeMeshBuildsABoundingVolumeHierarchy) {
   constexpr int kN = 40;
   const auto path = write_grid(kN);
@@ -209,6 +222,9 @@ TEST(ObjFileParser, LoadingALargeMeshBuildsABoundingVolumeHierarchy) {
   EXPECT_EQ(flat->children()[0]->bounds().max.x, kN);
   EXPECT_EQ(static_cast<const Group&>(*flat->children()[0]).size(), 2u * kN * kN);
   EXPECT_GE(depth(*bvh), 8u);  // log2(3200 / 4) ~ 10 levels
+  // Triangles straddling a split are gathered into subgroups of their own,
+  // so no group keeps a long list of them (the book's divide leaves dozens).
+  EXPECT_LT(widest_leaf(*bvh), kObjBvhThreshold);
   // Same hits with and without the hierarchy.
   for (double x : {0.25, 7.5, 19.9, 33.3}) {
     const Ray r{point(x, x / 2 + 0.1, -5), vector(0, 0, 1)};

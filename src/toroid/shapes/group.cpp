@@ -86,6 +86,16 @@ void Group::divide(std::size_t threshold) {
       // everything would only recurse forever, so keep them here.
       children_ = left.empty() ? std::move(right) : std::move(left);
     } else {
+      // Beyond the book: the children that straddle the split stay here in
+      // the book's version, and in a large mesh every ray that enters this
+      // box tests them all. When there are several, they go into a subgroup
+      // of their own too (a thin slab that divides well); there are fewer of
+      // them than `count`, so the recursion still ends.
+      if (children_.size() > 1 && children_.size() >= threshold) {
+        ShapeList straddling = std::move(children_);
+        children_.clear();
+        attach(subgroup_of(std::move(straddling)));
+      }
       if (!left.empty()) attach(subgroup_of(std::move(left)));
       if (!right.empty()) attach(subgroup_of(std::move(right)));
     }

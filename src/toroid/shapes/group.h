@@ -42,7 +42,8 @@ class Group : public Shape {
   // Adds a new group holding `children` as a child of this one.
   void make_subgroup(ShapeList children);
   // Builds the hierarchy: when this group has at least `threshold` children,
-  // partitions them into subgroups; then divides every child.
+  // partitions them into subgroups; then divides every child. Beyond the
+  // book, several children that straddle the split get a subgroup too.
   void divide(std::size_t threshold) override;
 
  protected:
