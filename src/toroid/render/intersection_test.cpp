@@ -72,3 +72,21 @@ TEST(Intersections, TheHitIsAlwaysTheLowestNonnegativeIntersection) {
 
 }  // namespace
 }  // namespace toroid
+
+// The one intersections.feature scenario that needs a triangle.
+#include "toroid/shapes/triangle.h"
+
+namespace toroid {
+namespace {
+
+TEST(Intersections, AnIntersectionCanEncapsulateUAndV) {
+  const Triangle s(point(0, 1, 0), point(-1, 0, 0), point(1, 0, 0));
+  const Intersection i{3.5, &s, 0.2, 0.4};
+  EXPECT_EQ(i.u, 0.2);
+  EXPECT_EQ(i.v, 0.4);
+  EXPECT_EQ(i.t, 3.5);
+  EXPECT_EQ(i.object, &s);
+}
+
+}  // namespace
+}  // namespace toroid

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "support/approx.h"
 
 namespace toroid {
@@ -52,6 +54,25 @@ TEST(Planes, ARayIntersectingAPlaneFromBelow) {
   ASSERT_EQ(xs.size(), 1u);
   EXPECT_APPROX(xs[0].t, 1.0);
   EXPECT_EQ(xs[0].object, &p);
+}
+
+}  // namespace
+}  // namespace toroid
+
+namespace toroid {
+namespace {
+
+// bonus bounding_boxes.feature
+TEST(BoundingBoxes, APlaneHasABoundingBox) {
+  const Plane shape;
+  const BoundingBox box = shape.bounds();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(box.min.x, -inf);
+  EXPECT_EQ(box.min.y, 0);
+  EXPECT_EQ(box.min.z, -inf);
+  EXPECT_EQ(box.max.x, inf);
+  EXPECT_EQ(box.max.y, 0);
+  EXPECT_EQ(box.max.z, inf);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "support/approx.h"
+#include "toroid/render/computations.h"
 
 namespace toroid {
 namespace {
@@ -40,6 +41,14 @@ TEST_F(SmoothTriangles, AnIntersectionWithASmoothTriangleStoresUV) {
 TEST_F(SmoothTriangles, ASmoothTriangleUsesUVToInterpolateTheNormal) {
   const Intersection i{1, &tri, 0.45, 0.25};
   EXPECT_APPROX(tri.normal_at(point(0, 0, 0), i), vector(-0.5547, 0.83205, 0));
+}
+
+TEST_F(SmoothTriangles, PreparingTheNormalOnASmoothTriangle) {
+  const Intersection i{1, &tri, 0.45, 0.25};
+  const Ray r{point(-0.2, 0.3, -2), vector(0, 0, 1)};
+  const Intersections xs{i};
+  const Computations comps = prepare_computations(i, r, xs);
+  EXPECT_APPROX(comps.normalv, vector(-0.5547, 0.83205, 0));
 }
 
 }  // namespace
