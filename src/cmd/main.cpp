@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include "intersect_command.h"
+#include "render_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"toroid: a ray tracer with an exact, analytic torus"};
@@ -9,6 +10,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exit_code = 0;
   toroid::cmd::add_intersect_command(app, exit_code);
+  toroid::cmd::add_render_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -29,7 +29,13 @@ void intersect_world(const World& world, const Ray& ray, Intersections& xs) {
   sort_intersections(xs);
 }
 
+std::uint64_t& rays_traced_on_this_thread() {
+  thread_local std::uint64_t count = 0;
+  return count;
+}
+
 bool is_shadowed(const World& world, const Tuple& point, const PointLight& light) {
+  ++rays_traced_on_this_thread();
   const Tuple to_light = light.position - point;
   const double distance = magnitude(to_light);
   const Ray ray{point, to_light / distance};
@@ -63,6 +69,7 @@ Color shade_hit(const World& world, const Computations& comps, int remaining) {
 }
 
 Color color_at(const World& world, const Ray& ray, int remaining) {
+  ++rays_traced_on_this_thread();
   // One buffer per thread, reused across rays. Recursion is safe: the
   // intersections are consumed by prepare_computations before shade_hit
   // can cast (and so overwrite them with) the next ray.

@@ -2,6 +2,7 @@
 // chapters 7, 8 and 11).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -39,6 +40,11 @@ bool is_shadowed(const World& world, const Tuple& point, const PointLight& light
 // Surface colour (every light) plus reflected and refracted colour, with
 // `remaining` bounces left.
 Color shade_hit(const World& world, const Computations& comps, int remaining = kDefaultRemaining);
+
+// Rays traced so far on the calling thread: every color_at call (camera,
+// reflected and refracted rays) and every is_shadowed call (shadow rays)
+// adds one. Renderers take differences around a unit of work.
+std::uint64_t& rays_traced_on_this_thread();
 
 // The colour seen along `ray`: black if it hits nothing.
 Color color_at(const World& world, const Ray& ray, int remaining = kDefaultRemaining);

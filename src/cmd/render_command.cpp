@@ -1,0 +1,125 @@
+// `toroid render`: a YAML scene to a PNG or PPM image.
+#include "render_command.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "toroid/io/image_writer.h"
+#include "toroid/render/renderer.h"
+#include "toroid/scene/scene_loader.h"
+
+namespace toroid::cmd {
+namespace {
+
+struct RenderCommandOptions {
+  std::string scene;
+  std::string output;
+  std::optional<int> width, height;
+  int samples = 1;
+  std::optional<int> threads;
+  int max_depth = kDefaultRemaining;
+  std::string solver;
+  bool quiet = false;
+};
+
+std::string format_duration(double s) {
+  if (!std::isfinite(s) || s < 0) return "--:--";
+  const long t = std::lround(s);
+  char buf[32];
+  if (t >= 3600) std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+  else std::snprintf(buf, sizeof buf, "%02ld:%02ld", t / 60, t % 60);
+  return buf;
+}
+
+void draw_bar(const RenderProgress& p) {
+  const double frac = p.pixels_total > 0 ? static_cast<double>(p.pixels_done) / p.pixels_total : 1.0;
+  constexpr int kWidth = 30;
+  const int filled = static_cast<int>(frac * kWidth);
+  std::string bar(static_cast<std::size_t>(filled), '#');
+  bar.append(static_cast<std::size_t>(kWidth - filled), '-');
+  const double eta = frac > 0 ? p.elapsed_s * (1 - frac) / frac : NAN;
+  const double mrays = p.elapsed_s > 0 ? p.rays / p.elapsed_s / 1e6 : 0;
+  std::fprintf(stderr, "\r[%s] %5.1f%%  elapsed %s  ETA %s  %.2f Mrays/s\x1b[K", bar.c_str(), frac * 100,
+               format_duration(p.elapsed_s).c_str(), format_duration(eta).c_str(), mrays);
+  std::fflush(stderr);
+}
+
+int run_render(const RenderCommandOptions& opt) {
+  SceneLoadOptions load_options;
+  if (!opt.solver.empty()) load_options.solver = solver_from_name(opt.solver);
+  std::optional<Scene> scene;
+  try {
+    scene.emplace(load_scene(opt.scene, load_options));
+  } catch (const SceneError& e) {
+    std::cerr << "toroid render: " << e.what() << "\n";
+    return 2;
+  }
+  Camera camera = scene->camera;
+  if (opt.width || opt.height) {
+    camera = Camera(opt.width.value_or(camera.hsize()), opt.height.value_or(camera.vsize()), camera.field_of_view());
+    camera.set_transform(scene->camera.transform());
+  }
+
+  RenderOptions ro;
+  ro.samples = opt.samples;
+  ro.threads = opt.threads.value_or(0);
+  ro.max_depth = opt.max_depth;
+  const bool show_bar = !opt.quiet && isatty(STDERR_FILENO);
+  if (show_bar) ro.progress = draw_bar;
+  RenderStats stats;
+  const Canvas canvas = render_image(camera, scene->world, ro, &stats);
+  if (show_bar) std::fputs("\r\x1b[K", stderr);
+
+  try {
+    write_image(canvas, opt.output);
+  } catch (const std::exception& e) {
+    std::cerr << "toroid render: " << e.what() << "\n";
+    return 1;
+  }
+  if (!opt.quiet) {
+    std::fprintf(stderr, "%dx%d, %d samples, %d threads, %.2f s, %llu rays, %.2f Mrays/s\n", canvas.width(),
+                 canvas.height(), ro.samples, stats.threads, stats.seconds,
+                 static_cast<unsigned long long>(stats.rays),
+                 stats.seconds > 0 ? static_cast<double>(stats.rays) / stats.seconds / 1e6 : 0.0);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, int& exit_code) {
+  auto opt = std::make_shared<RenderCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "render",
+      "Render a scene in the Ray Tracer Challenge YAML format (plus 'add: torus') to a PNG or PPM image.\n"
+      "Prints WIDTHxHEIGHT, samples, threads, time, rays (camera + shadow + reflected + refracted) and\n"
+      "Mrays/s on stderr; a progress bar too when stderr is a terminal.");
+  sub->add_option("scene", opt->scene, "Scene file (.yml/.yaml)")->required()->check(CLI::ExistingFile);
+  sub->add_option("-o,--output", opt->output, "Output image: .png (8-bit sRGB) or .ppm (the book's plain PPM)")
+      ->required();
+  const auto side = CLI::Range(1, 16384);
+  sub->add_option("--width", opt->width, "Image width in pixels (overrides the camera's; keeps its field of view)")
+      ->check(side);
+  sub->add_option("--height", opt->height, "Image height in pixels (overrides the camera's; keeps its field of view)")
+      ->check(side);
+  sub->add_option("--samples", opt->samples,
+                  "Samples per pixel (>= 1): a stratified, deterministically jittered grid")
+      ->check(CLI::Range(1, 65536))
+      ->capture_default_str();
+  sub->add_option("--threads", opt->threads, "Worker threads (>= 1; default: every core)")->check(CLI::Range(1, 4096));
+  sub->add_option("--max-depth", opt->max_depth, "Reflection/refraction recursion limit (>= 0)")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  sub->add_option("--solver", opt->solver, "Quartic solver for every torus (overrides the scene's 'solver:')")
+      ->check(CLI::IsMember({"default", "ferrari", "tianheng"}));
+  sub->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
+  sub->callback([opt, &exit_code] { exit_code = run_render(*opt); });
+}
+
+}  // namespace toroid::cmd

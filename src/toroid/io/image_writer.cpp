@@ -1,0 +1,126 @@
+#include "toroid/io/image_writer.h"
+
+#include <png.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace toroid {
+
+unsigned char linear_to_srgb8(double c) {
+  if (!(c > 0)) return 0;  // also NaN
+  if (c >= 1) return 255;
+  const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+  return static_cast<unsigned char>(std::lround(s * 255.0));
+}
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  return ext;
+}
+
+struct PngFailure {
+  std::string message;
+};
+
+void png_error_fn(png_structp png, png_const_charp msg) {
+  auto* err = static_cast<std::string*>(png_get_error_ptr(png));
+  *err = msg;
+  png_longjmp(png, 1);
+}
+void png_warning_fn(png_structp, png_const_charp) {}
+
+// Returns an empty string on success, else what went wrong.
+std::string write_png(const Canvas& canvas, FILE* f) {
+  std::string error;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, png_error_fn, png_warning_fn);
+  if (!png) return "out of memory";
+  png_infop info = png_create_info_struct(png);
+  if (!info) {
+    png_destroy_write_struct(&png, nullptr);
+    return "out of memory";
+  }
+  const int w = canvas.width(), h = canvas.height();
+  std::vector<unsigned char> row(static_cast<std::size_t>(w) * 3);
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return error.empty() ? "libpng error" : error;
+  }
+  png_init_io(png, f);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), 8, PNG_COLOR_TYPE_RGB,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const Color c = canvas.pixel_at(x, y);
+      row[3 * x + 0] = linear_to_srgb8(c.r);
+      row[3 * x + 1] = linear_to_srgb8(c.g);
+      row[3 * x + 2] = linear_to_srgb8(c.b);
+    }
+    png_write_row(png, row.data());
+  }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return {};
+}
+
+}  // namespace
+
+void write_image(const Canvas& canvas, const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext != ".png" && ext != ".ppm")
+    throw ImageWriteError("cannot write '" + path + "': unknown image format '" + ext +
+                          "' (use a .png or .ppm file name)");
+  if (canvas.width() <= 0 || canvas.height() <= 0)
+    throw ImageWriteError("cannot write '" + path + "': the image is empty");
+
+  // A temporary name in the same directory, so that rename() is atomic.
+  const std::filesystem::path target(path);
+  const std::filesystem::path dir = target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
+  std::string tmpl = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+  const int fd = mkstemp(tmpl.data());
+  if (fd < 0) throw ImageWriteError("cannot write '" + path + "': " + std::strerror(errno));
+  const std::string tmp = tmpl;
+  FILE* f = fdopen(fd, "wb");
+  if (!f) {
+    const int e = errno;
+    ::close(fd);
+    std::remove(tmp.c_str());
+    throw ImageWriteError("cannot write '" + path + "': " + std::strerror(e));
+  }
+  std::string error;
+  if (ext == ".png") {
+    error = write_png(canvas, f);
+  } else {
+    const std::string ppm = canvas_to_ppm(canvas);
+    if (std::fwrite(ppm.data(), 1, ppm.size(), f) != ppm.size()) error = std::strerror(errno);
+  }
+  if (std::fflush(f) != 0 && error.empty()) error = std::strerror(errno);
+  if (std::ferror(f) && error.empty()) error = "write error";
+  if (std::fclose(f) != 0 && error.empty()) error = std::strerror(errno);
+  if (error.empty()) {
+    // mkstemp creates 0600; give the image the usual permissions (umask).
+    const mode_t mask = umask(0);
+    umask(mask);
+    ::chmod(tmp.c_str(), 0666 & ~mask);
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) error = std::strerror(errno);
+  }
+  if (!error.empty()) {
+    std::remove(tmp.c_str());
+    throw ImageWriteError("cannot write '" + path + "': " + error);
+  }
+}
+
+}  // namespace toroid

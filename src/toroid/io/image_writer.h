@@ -1,0 +1,26 @@
+// Writing a canvas to disk: PNG (8-bit sRGB) or the book's plain PPM.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "toroid/render/canvas.h"
+
+namespace toroid {
+
+struct ImageWriteError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Linear [0, 1] (clamped) to an 8-bit sRGB code value.
+unsigned char linear_to_srgb8(double linear);
+
+// Writes by extension: ".png" (8-bit RGB, sRGB-encoded from the canvas's
+// linear colours, with an sRGB chunk) or ".ppm" (canvas_to_ppm, no gamma, as
+// the book specifies). The file is written to a temporary name in the same
+// directory and renamed, so `path` only ever holds a complete image. Throws
+// ImageWriteError (e.g. "cannot write 'dir/x.png': No such file or
+// directory") and leaves nothing behind on failure.
+void write_image(const Canvas& canvas, const std::string& path);
+
+}  // namespace toroid

@@ -1,0 +1,106 @@
+#include "toroid/render/renderer.h"
+
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/info.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+
+namespace toroid {
+namespace {
+
+std::uint64_t splitmix64(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+double unit(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }  // [0, 1)
+
+}  // namespace
+
+void sample_offset(int x, int y, int s, int n, double& dx, double& dy) {
+  if (n <= 1) {
+    dx = dy = 0.5;
+    return;
+  }
+  const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+  const int rows = (n + cols - 1) / cols;
+  const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) ^
+                            (static_cast<std::uint64_t>(static_cast<std::uint32_t>(y)) << 12) ^
+                            static_cast<std::uint64_t>(s) * 0x632be59bd9b4e019ULL;
+  const std::uint64_t h1 = splitmix64(key);
+  const std::uint64_t h2 = splitmix64(h1);
+  dx = ((s % cols) + unit(h1)) / cols;
+  dy = ((s / cols) + unit(h2)) / rows;
+}
+
+Canvas render_image(const Camera& camera, const World& world, const RenderOptions& options, RenderStats* stats) {
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  const int w = camera.hsize(), h = camera.vsize();
+  Canvas canvas(w, h);
+  const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  const int samples = std::max(1, options.samples);
+  const int tile = std::max(1, options.tile_size);
+  const int tiles_x = (w + tile - 1) / tile, tiles_y = (h + tile - 1) / tile;
+  const std::int64_t total = static_cast<std::int64_t>(w) * h;
+
+  std::atomic<std::int64_t> pixels_done{0};
+  std::atomic<std::uint64_t> rays{0};
+  std::mutex progress_mutex;
+  double next_report = options.progress_interval_s;  // guarded by progress_mutex
+  auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };
+
+  auto render_tile = [&](int t) {
+    const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
+    const int x1 = std::min(w, x0 + tile), y1 = std::min(h, y0 + tile);
+    const std::uint64_t before = rays_traced_on_this_thread();
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) {
+        Color sum = kBlack;
+        for (int s = 0; s < samples; ++s) {
+          double dx, dy;
+          sample_offset(x, y, s, samples, dx, dy);
+          sum += color_at(world, camera.ray_for_pixel(x, y, dx, dy), options.max_depth);
+        }
+        canvas.write_pixel(x, y, samples == 1 ? sum : sum / static_cast<double>(samples));
+      }
+    rays.fetch_add(rays_traced_on_this_thread() - before, std::memory_order_relaxed);
+    const std::int64_t done = pixels_done.fetch_add(static_cast<std::int64_t>(x1 - x0) * (y1 - y0)) +
+                              static_cast<std::int64_t>(x1 - x0) * (y1 - y0);
+    if (options.progress && done < total) {
+      std::unique_lock lock(progress_mutex, std::try_to_lock);
+      if (lock.owns_lock()) {
+        const double e = elapsed();
+        if (e >= next_report) {
+          next_report = e + options.progress_interval_s;
+          options.progress(RenderProgress{done, total, e, rays.load(std::memory_order_relaxed)});
+        }
+      }
+    }
+  };
+
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
+        for (int t = r.begin(); t != r.end(); ++t) render_tile(t);
+      });
+    });
+  }
+  const double seconds = elapsed();
+  if (options.progress) options.progress(RenderProgress{total, total, seconds, rays.load()});
+  if (stats) *stats = RenderStats{seconds, rays.load(), threads};
+  return canvas;
+}
+
+}  // namespace toroid

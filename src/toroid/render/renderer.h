@@ -1,0 +1,51 @@
+// Parallel rendering of a camera's view of a world: 16x16 tiles on oneTBB,
+// stratified, deterministically jittered supersampling.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "toroid/render/camera.h"
+#include "toroid/render/canvas.h"
+#include "toroid/render/world.h"
+
+namespace toroid {
+
+struct RenderProgress {
+  std::int64_t pixels_done = 0;
+  std::int64_t pixels_total = 0;
+  double elapsed_s = 0;
+  std::uint64_t rays = 0;  // rays traced so far (see rays_traced_on_this_thread)
+};
+
+struct RenderOptions {
+  // Samples per pixel (>= 1). 1: one ray through the pixel centre (the book).
+  // N > 1: a ceil(sqrt N)-column stratified grid, each sample jittered within
+  // its cell by a hash of (pixel, sample), so the image does not depend on the
+  // number of threads or on scheduling.
+  int samples = 1;
+  // Worker threads (>= 1); 0: every core.
+  int threads = 0;
+  // Bounces for reflection and refraction.
+  int max_depth = kDefaultRemaining;
+  int tile_size = 16;
+  // Called now and then (at most every progress_interval_s, from a worker
+  // thread, never concurrently) and once at the end.
+  std::function<void(const RenderProgress&)> progress;
+  double progress_interval_s = 0.25;
+};
+
+struct RenderStats {
+  double seconds = 0;
+  std::uint64_t rays = 0;  // camera + shadow + reflected + refracted rays
+  int threads = 0;
+};
+
+// Renders the image; fills `stats` when given. Precondition: options valid.
+Canvas render_image(const Camera& camera, const World& world, const RenderOptions& options,
+                    RenderStats* stats = nullptr);
+
+// The sub-pixel offset (dx, dy in [0, 1)) of sample `s` of `n` for pixel (x, y).
+void sample_offset(int x, int y, int s, int n, double& dx, double& dy);
+
+}  // namespace toroid

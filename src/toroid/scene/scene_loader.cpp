@@ -1,0 +1,673 @@
+#include "toroid/scene/scene_loader.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <numbers>
+#include <optional>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "toroid/math/transform.h"
+#include "toroid/render/pattern.h"
+#include "toroid/scene/obj_file.h"
+#include "toroid/shapes/cone.h"
+#include "toroid/shapes/csg.h"
+#include "toroid/shapes/cube.h"
+#include "toroid/shapes/cylinder.h"
+#include "toroid/shapes/group.h"
+#include "toroid/shapes/plane.h"
+#include "toroid/shapes/sphere.h"
+#include "toroid/shapes/torus.h"
+
+namespace toroid {
+
+int edit_distance(const std::string& a, const std::string& b) {
+  std::vector<int> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = static_cast<int>(j);
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = static_cast<int>(i);
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const int sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
+    }
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+namespace {
+
+constexpr int kMaxImageSide = 16384;
+constexpr std::size_t kGroupBvhThreshold = 8;
+
+// " (did you mean 'x'?)" for the nearest candidate, if near enough.
+std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
+  std::string best;
+  int best_d = 1 << 30;
+  for (const auto& c : candidates) {
+    const int d = edit_distance(word, c);
+    if (d < best_d) best_d = d, best = c;
+  }
+  const int limit = std::max<int>(2, static_cast<int>(word.size()) / 3);
+  if (best.empty() || best_d > limit) return {};
+  return " (did you mean '" + best + "'?)";
+}
+
+// The key/value pairs of a YAML map, in order, keeping nodes for positions.
+struct Entry {
+  std::string key;
+  YAML::Node key_node;
+  YAML::Node value;
+};
+
+class Loader {
+ public:
+  Loader(std::string source, std::filesystem::path base_dir, const SceneLoadOptions& options)
+      : source_(std::move(source)), base_dir_(std::move(base_dir)), options_(options) {}
+
+  Scene load(const YAML::Node& root);
+
+ private:
+  struct Define {
+    YAML::Node name_node;
+    YAML::Node value;
+    std::optional<YAML::Node> extend;
+  };
+  struct CameraParams {
+    int width = 0, height = 0;
+    double fov = 0;
+    Tuple from, to, up;
+  };
+
+  [[noreturn]] void fail(const YAML::Mark& mark, const std::string& what) const {
+    std::ostringstream os;
+    os << source_ << ':';
+    if (mark.line >= 0) os << mark.line + 1 << ':' << mark.column + 1 << ": ";
+    else os << ' ';
+    os << what;
+    throw SceneError(os.str());
+  }
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& what) const { fail(node.Mark(), what); }
+
+  static std::string describe(const YAML::Node& n) {
+    switch (n.Type()) {
+      case YAML::NodeType::Scalar: return "'" + n.Scalar() + "'";
+      case YAML::NodeType::Sequence: return "a list";
+      case YAML::NodeType::Map: return "a map";
+      case YAML::NodeType::Null: return "nothing";
+      default: return "nothing";
+    }
+  }
+
+  std::vector<Entry> entries(const YAML::Node& map, const std::string& what) const {
+    if (!map.IsMap()) fail(map, what + " must be a map, got " + describe(map));
+    std::vector<Entry> out;
+    for (auto it = map.begin(); it != map.end(); ++it) {
+      if (!it->first.IsScalar()) fail(it->first, "keys must be plain names");
+      const std::string key = it->first.Scalar();
+      for (const auto& e : out)
+        if (e.key == key) fail(it->first, "duplicate key '" + key + "'");
+      out.push_back({key, it->first, it->second});
+    }
+    return out;
+  }
+
+  void check_keys(const std::vector<Entry>& es, const std::vector<std::string>& allowed, const std::string& what) const {
+    for (const auto& e : es)
+      if (std::find(allowed.begin(), allowed.end(), e.key) == allowed.end())
+        fail(e.key_node, "unknown key '" + e.key + "' in " + what + suggestion(e.key, allowed));
+  }
+
+  static const Entry* find(const std::vector<Entry>& es, const std::string& key) {
+    for (const auto& e : es)
+      if (e.key == key) return &e;
+    return nullptr;
+  }
+
+  const Entry& require(const std::vector<Entry>& es, const std::string& key, const YAML::Node& where,
+                       const std::string& what) const {
+    const Entry* e = find(es, key);
+    if (!e) fail(where, what + " needs '" + key + "'");
+    return *e;
+  }
+
+  double number(const YAML::Node& n) const {
+    if (!n.IsScalar()) fail(n, "expected a number, got " + describe(n));
+    double v = 0;
+    if (!YAML::convert<double>::decode(n, v)) fail(n, "expected a number, got '" + n.Scalar() + "'");
+    if (!std::isfinite(v)) fail(n, "expected a finite number, got '" + n.Scalar() + "'");
+    return v;
+  }
+  double positive(const YAML::Node& n, const std::string& what) const {
+    const double v = number(n);
+    if (v <= 0) fail(n, what + " must be > 0, got " + n.Scalar());
+    return v;
+  }
+  int integer(const YAML::Node& n) const {
+    if (!n.IsScalar()) fail(n, "expected an integer, got " + describe(n));
+    long long v = 0;
+    if (!YAML::convert<long long>::decode(n, v)) fail(n, "expected an integer, got '" + n.Scalar() + "'");
+    if (v < -(1LL << 30) || v > (1LL << 30)) fail(n, "integer out of range: " + n.Scalar());
+    return static_cast<int>(v);
+  }
+  bool boolean(const YAML::Node& n) const {
+    bool b = false;
+    if (!n.IsScalar() || !YAML::convert<bool>::decode(n, b)) fail(n, "expected true or false, got " + describe(n));
+    return b;
+  }
+  std::string name(const YAML::Node& n, const std::string& what) const {
+    if (!n.IsScalar() || n.Scalar().empty()) fail(n, what + " must be a name, got " + describe(n));
+    return n.Scalar();
+  }
+  std::vector<double> numbers(const YAML::Node& n, std::size_t count, const std::string& what) const {
+    if (!n.IsSequence()) fail(n, what + " must be a list of " + std::to_string(count) + " numbers, got " + describe(n));
+    if (n.size() != count)
+      fail(n, what + " must have " + std::to_string(count) + " numbers, got " + std::to_string(n.size()));
+    std::vector<double> v;
+    for (std::size_t i = 0; i < count; ++i) v.push_back(number(n[i]));
+    return v;
+  }
+  Color color(const YAML::Node& n, const std::string& what) const {
+    const auto v = numbers(n, 3, what);
+    return Color{v[0], v[1], v[2]};
+  }
+  Tuple point3(const YAML::Node& n, const std::string& what) const {
+    const auto v = numbers(n, 3, what);
+    return point(v[0], v[1], v[2]);
+  }
+  Tuple vector3(const YAML::Node& n, const std::string& what) const {
+    const auto v = numbers(n, 3, what);
+    return vector(v[0], v[1], v[2]);
+  }
+
+  const Define& lookup_define(const YAML::Node& name_node, const std::string& what) const {
+    const std::string n = name(name_node, what);
+    auto it = defines_.find(n);
+    if (it == defines_.end()) {
+      std::vector<std::string> names;
+      for (const auto& [k, _] : defines_) names.push_back(k);
+      fail(name_node, "undefined " + what + " '" + n + "'" + suggestion(n, names));
+    }
+    return it->second;
+  }
+
+  // Transforms ---------------------------------------------------------------
+  void check_invertible(const Matrix4& m, const YAML::Node& where) const {
+    const double det = determinant(m);
+    if (!std::isfinite(det) || det == 0.0) fail(where, "singular transform (determinant 0): it cannot be inverted");
+  }
+
+  // Composes a transform list onto `m` (first listed applies first).
+  void apply_transform_list(const YAML::Node& list, Matrix4& m, std::set<std::string>& visiting) const {
+    if (!list.IsSequence()) fail(list, "transform must be a list, got " + describe(list));
+    for (const YAML::Node& op : list) {
+      if (op.IsScalar()) {
+        apply_transform_define(op, m, visiting);
+        continue;
+      }
+      if (!op.IsSequence() || op.size() == 0 || !op[0].IsScalar())
+        fail(op, "a transform must be [operation, numbers...] or the name of a defined transform");
+      const std::string kind = op[0].Scalar();
+      auto args = [&](std::size_t n) {
+        if (op.size() != n + 1)
+          fail(op, "'" + kind + "' takes " + std::to_string(n) + " number" + (n == 1 ? "" : "s") + ", got " +
+                       std::to_string(op.size() - 1));
+        std::vector<double> v;
+        for (std::size_t i = 1; i <= n; ++i) v.push_back(number(op[i]));
+        return v;
+      };
+      Matrix4 t;
+      if (kind == "translate") {
+        const auto v = args(3);
+        t = translation(v[0], v[1], v[2]);
+      } else if (kind == "scale") {
+        const auto v = args(3);
+        t = scaling(v[0], v[1], v[2]);
+      } else if (kind == "rotate-x") {
+        t = rotation_x(args(1)[0]);
+      } else if (kind == "rotate-y") {
+        t = rotation_y(args(1)[0]);
+      } else if (kind == "rotate-z") {
+        t = rotation_z(args(1)[0]);
+      } else if (kind == "shear") {
+        const auto v = args(6);
+        t = shearing(v[0], v[1], v[2], v[3], v[4], v[5]);
+      } else {
+        fail(op[0], "unknown transform '" + kind + "'" +
+                        suggestion(kind, {"translate", "scale", "rotate-x", "rotate-y", "rotate-z", "shear"}));
+      }
+      m = t * m;
+    }
+  }
+
+  void apply_transform_define(const YAML::Node& name_node, Matrix4& m, std::set<std::string>& visiting) const {
+    const Define& d = lookup_define(name_node, "transform");
+    const std::string n = name_node.Scalar();
+    if (!visiting.insert(n).second) fail(name_node, "circular define: '" + n + "' refers to itself");
+    if (!d.value.IsSequence()) fail(name_node, "'" + n + "' is not a transform (its value is not a list)");
+    if (d.extend) apply_transform_define(*d.extend, m, visiting);
+    apply_transform_list(d.value, m, visiting);
+    visiting.erase(n);
+  }
+
+  Matrix4 transform_of(const YAML::Node& list) const {
+    Matrix4 m = Matrix4::identity();
+    std::set<std::string> visiting;
+    apply_transform_list(list, m, visiting);
+    check_invertible(m, list);
+    return m;
+  }
+
+  // Patterns and materials ---------------------------------------------------
+  // A `map` pattern (UV texture mapping) is not supported: name a missing
+  // texture file first, since that is what the user must fix anyway.
+  [[noreturn]] void unsupported_map(const YAML::Node& pattern, const YAML::Node& type_node) const {
+    missing_texture(pattern);
+    fail(type_node, "pattern type '" + type_node.Scalar() +
+                        "' (UV texture mapping) is not supported yet; use stripes, gradient, rings, checkers or "
+                        "blended");
+  }
+
+  // Fails naming the first texture file (in file order) that does not exist.
+  void missing_texture(const YAML::Node& n) const {
+    if (n.IsSequence())
+      for (const YAML::Node& c : n) missing_texture(c);
+    if (!n.IsMap()) return;
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      if (it->first.IsScalar() && it->first.Scalar() == "file" && it->second.IsScalar()) {
+        const auto p = base_dir_ / it->second.Scalar();
+        if (!std::filesystem::exists(p))
+          fail(it->second, "texture file '" + it->second.Scalar() + "' not found (looked for '" + p.string() +
+                               "'); texture-mapped patterns (type: map) are not supported yet either");
+      }
+      missing_texture(it->second);
+    }
+  }
+
+  std::shared_ptr<Pattern> pattern(const YAML::Node& node) const {
+    const auto es = entries(node, "a pattern");
+    const Entry& type = require(es, "type", node, "a pattern");
+    const std::string kind = name(type.value, "pattern type");
+    if (kind == "map" || kind == "image" || kind == "align_check" || kind == "texture_map") unsupported_map(node, type.value);
+    std::shared_ptr<Pattern> p;
+    if (kind == "blended") {
+      check_keys(es, {"type", "patterns", "transform"}, "a blended pattern");
+      const Entry& ps = require(es, "patterns", node, "a blended pattern");
+      if (!ps.value.IsSequence() || ps.value.size() != 2) fail(ps.value, "'patterns' must be a list of 2 patterns");
+      p = std::make_shared<BlendedPattern>(pattern(ps.value[0]), pattern(ps.value[1]));
+    } else {
+      const std::vector<std::string> kinds{"stripes", "gradient", "rings", "checkers", "blended"};
+      if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
+        fail(type.value, "unknown pattern type '" + kind + "'" + suggestion(kind, kinds));
+      check_keys(es, {"type", "colors", "transform"}, "a pattern");
+      const Entry& cs = require(es, "colors", node, "a '" + kind + "' pattern");
+      if (!cs.value.IsSequence() || cs.value.size() != 2)
+        fail(cs.value, "'colors' must be a list of 2 colors [r, g, b], got " +
+                           (cs.value.IsSequence() ? std::to_string(cs.value.size()) + " entries" : describe(cs.value)));
+      const Color a = color(cs.value[0], "a color"), b = color(cs.value[1], "a color");
+      if (kind == "stripes") p = std::make_shared<StripePattern>(a, b);
+      else if (kind == "gradient") p = std::make_shared<GradientPattern>(a, b);
+      else if (kind == "rings") p = std::make_shared<RingPattern>(a, b);
+      else p = std::make_shared<CheckersPattern>(a, b);
+    }
+    if (const Entry* t = find(es, "transform")) p->set_transform(transform_of(t->value));
+    return p;
+  }
+
+  void apply_material_map(const YAML::Node& node, Material& m, bool& casts_shadow) const {
+    const auto es = entries(node, "a material");
+    check_keys(es,
+               {"color", "ambient", "diffuse", "specular", "shininess", "reflective", "transparency",
+                "refractive-index", "pattern", "shadow"},
+               "a material");
+    for (const Entry& e : es) {
+      if (e.key == "color") m.color = color(e.value, "color");
+      else if (e.key == "ambient") m.ambient = number(e.value);
+      else if (e.key == "diffuse") m.diffuse = number(e.value);
+      else if (e.key == "specular") m.specular = number(e.value);
+      else if (e.key == "shininess") m.shininess = number(e.value);
+      else if (e.key == "reflective") m.reflective = number(e.value);
+      else if (e.key == "transparency") m.transparency = number(e.value);
+      else if (e.key == "refractive-index") m.refractive_index = number(e.value);
+      else if (e.key == "pattern") m.pattern = pattern(e.value);
+      else if (e.key == "shadow") casts_shadow = boolean(e.value);
+    }
+  }
+
+  void apply_material_define(const YAML::Node& name_node, Material& m, bool& casts_shadow,
+                             std::set<std::string>& visiting) const {
+    const Define& d = lookup_define(name_node, "material");
+    const std::string n = name_node.Scalar();
+    if (!visiting.insert(n).second) fail(name_node, "circular define: '" + n + "' refers to itself");
+    if (!d.value.IsMap() || d.value["add"]) fail(name_node, "'" + n + "' is not a material");
+    if (d.extend) apply_material_define(*d.extend, m, casts_shadow, visiting);
+    apply_material_map(d.value, m, casts_shadow);
+    visiting.erase(n);
+  }
+
+  void apply_material(const YAML::Node& node, Material& m, bool& casts_shadow) const {
+    if (node.IsScalar()) {
+      std::set<std::string> visiting;
+      apply_material_define(node, m, casts_shadow, visiting);
+    } else {
+      apply_material_map(node, m, casts_shadow);
+    }
+  }
+
+  // Shapes -------------------------------------------------------------------
+  static const std::vector<std::string>& builtin_kinds() {
+    static const std::vector<std::string> k{"sphere", "plane", "cube", "cylinder", "cone",
+                                            "group",  "csg",   "obj",  "torus"};
+    return k;
+  }
+  static bool is_builtin(const std::string& k) {
+    const auto& b = builtin_kinds();
+    return std::find(b.begin(), b.end(), k) != b.end();
+  }
+
+  // The shape's kind and its keys, following `add: NAME` through shape
+  // defines (the item's keys override the define's).
+  void collect_shape(const YAML::Node& item, std::string& kind, YAML::Node& kind_node, std::vector<Entry>& out,
+                     std::set<std::string>& visiting, bool operand) const {
+    auto es = entries(item, "a shape");
+    const Entry* k = find(es, "add");
+    if (!k && operand) k = find(es, "type");
+    if (!k) fail(item, operand ? "a shape needs 'add' (or 'type')" : "a shape needs 'add'");
+    const std::string n = name(k->value, "a shape kind");
+    const YAML::Node knode = k->value;
+    std::vector<Entry> own;
+    for (const Entry& e : es)
+      if (e.key_node.Scalar() != k->key) own.push_back(e);
+    if (is_builtin(n)) {
+      kind = n;
+      kind_node = knode;
+      out = own;
+      return;
+    }
+    auto it = defines_.find(n);
+    if (it == defines_.end() || !it->second.value.IsMap() || !it->second.value["add"]) {
+      std::vector<std::string> names = builtin_kinds();
+      for (const auto& [dn, d] : defines_)
+        if (d.value.IsMap() && d.value["add"]) names.push_back(dn);
+      fail(knode, "unknown shape '" + n + "'" + suggestion(n, names));
+    }
+    if (!visiting.insert(n).second) fail(knode, "circular define: shape '" + n + "' contains itself");
+    collect_shape(it->second.value, kind, kind_node, out, visiting, false);
+    visiting.erase(n);
+    for (const Entry& e : own) {
+      auto same = std::find_if(out.begin(), out.end(), [&](const Entry& o) { return o.key == e.key; });
+      if (same != out.end()) *same = e;
+      else out.push_back(e);
+    }
+  }
+
+  static void set_shadow_recursive(Shape& s, bool casts) {
+    s.casts_shadow = casts;
+    if (auto* g = dynamic_cast<Group*>(&s))
+      for (const auto& c : g->children()) set_shadow_recursive(*c, casts);
+    if (auto* c = dynamic_cast<Csg*>(&s)) {
+      set_shadow_recursive(*c->left(), casts);
+      set_shadow_recursive(*c->right(), casts);
+    }
+  }
+
+  struct Inherited {
+    const Material* material = nullptr;
+  };
+
+  std::shared_ptr<Shape> shape(const YAML::Node& item, const Inherited& inh, std::set<std::string>& visiting,
+                               bool operand = false) const {
+    std::string kind;
+    YAML::Node kind_node;
+    std::vector<Entry> es;
+    collect_shape(item, kind, kind_node, es, visiting, operand);
+    std::vector<std::string> allowed{"transform", "material", "shadow"};
+    if (kind == "cylinder" || kind == "cone") allowed.insert(allowed.end(), {"min", "max", "closed"});
+    else if (kind == "group") allowed.push_back("children");
+    else if (kind == "csg") allowed.insert(allowed.end(), {"operation", "left", "right"});
+    else if (kind == "obj") allowed.push_back("file");
+    else if (kind == "torus") allowed.insert(allowed.end(), {"major", "minor", "solver"});
+    check_keys(es, allowed, "a " + kind);
+
+    Material material = inh.material ? *inh.material : Material{};
+    bool casts_shadow = true;
+    bool has_material = false, has_shadow = false;
+    if (const Entry* m = find(es, "material")) {
+      material = Material{};
+      apply_material(m->value, material, casts_shadow);
+      has_material = true;
+      has_shadow = !casts_shadow;
+    }
+    if (const Entry* s = find(es, "shadow")) {
+      casts_shadow = boolean(s->value);
+      has_shadow = true;
+    }
+    Inherited child_inh{has_material ? &material : inh.material};
+
+    std::shared_ptr<Shape> s;
+    if (kind == "sphere") s = std::make_shared<Sphere>();
+    else if (kind == "plane") s = std::make_shared<Plane>();
+    else if (kind == "cube") s = std::make_shared<Cube>();
+    else if (kind == "cylinder" || kind == "cone") {
+      double lo = -BoundingBox::kInf, hi = BoundingBox::kInf;
+      bool closed = false;
+      const Entry* mn = find(es, "min");
+      const Entry* mx = find(es, "max");
+      if (mn) lo = number(mn->value);
+      if (mx) hi = number(mx->value);
+      if (const Entry* c = find(es, "closed")) closed = boolean(c->value);
+      if (mn && mx && !(lo < hi)) fail(mx->value, "'max' must be greater than 'min'");
+      if (kind == "cylinder") {
+        auto c = std::make_shared<Cylinder>();
+        c->minimum = lo, c->maximum = hi, c->closed = closed;
+        s = c;
+      } else {
+        auto c = std::make_shared<Cone>();
+        c->minimum = lo, c->maximum = hi, c->closed = closed;
+        s = c;
+      }
+    } else if (kind == "torus") {
+      double major = 1.0, minor = 0.25;
+      if (const Entry* e = find(es, "major")) major = positive(e->value, "torus 'major'");
+      if (const Entry* e = find(es, "minor")) minor = positive(e->value, "torus 'minor'");
+      auto t = std::make_shared<Torus>(major, minor);
+      if (const Entry* e = find(es, "solver")) {
+        const auto sv = solver_from_name(name(e->value, "solver"));
+        if (!sv)
+          fail(e->value, "unknown solver '" + e->value.Scalar() + "' (use default, ferrari or tianheng)" +
+                             suggestion(e->value.Scalar(), {"default", "ferrari", "tianheng"}));
+        t->set_solver(*sv);
+      }
+      if (options_.solver) t->set_solver(*options_.solver);
+      s = t;
+    } else if (kind == "group") {
+      auto g = std::make_shared<Group>();
+      if (const Entry* c = find(es, "children")) {
+        if (!c->value.IsSequence()) fail(c->value, "'children' must be a list of shapes, got " + describe(c->value));
+        for (const YAML::Node& child : c->value) g->add_child(shape(child, child_inh, visiting));
+      }
+      s = g;
+    } else if (kind == "csg") {
+      const Entry& op = require(es, "operation", kind_node, "a csg");
+      const std::string o = name(op.value, "operation");
+      CsgOp cop;
+      if (o == "union") cop = CsgOp::Union;
+      else if (o == "intersection") cop = CsgOp::Intersection;
+      else if (o == "difference") cop = CsgOp::Difference;
+      else
+        fail(op.value, "unknown csg operation '" + o + "'" + suggestion(o, {"union", "intersection", "difference"}) +
+                           " (use union, intersection or difference)");
+      const Entry* l = find(es, "left");
+      const Entry* r = find(es, "right");
+      if (!l || !r) fail(kind_node, std::string("a csg needs both 'left' and 'right' operands (missing '") +
+                                        (!l ? "left" : "right") + "')");
+      auto left = shape(l->value, child_inh, visiting, true);
+      auto right = shape(r->value, child_inh, visiting, true);
+      s = std::make_shared<Csg>(cop, std::move(left), std::move(right));
+    } else if (kind == "obj") {
+      const Entry& f = require(es, "file", kind_node, "an obj");
+      const std::string file = name(f.value, "file");
+      const std::filesystem::path p = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base_dir_ / file;
+      if (!std::filesystem::exists(p)) fail(f.value, "OBJ file '" + file + "' not found (looked for '" + p.string() + "')");
+      try {
+        s = load_obj(p);
+      } catch (const std::exception& e) {
+        fail(f.value, "cannot load OBJ file '" + file + "': " + e.what());
+      }
+    }
+    s->material = material;
+    if (const Entry* t = find(es, "transform")) s->set_transform(transform_of(t->value));
+    // Groups and CSG pass their material to the primitives below them that
+    // name none; their `shadow` applies to the whole subtree.
+    if (kind == "obj" && has_material) apply_material_recursive(*s, material);
+    if (has_shadow) set_shadow_recursive(*s, casts_shadow);
+    return s;
+  }
+
+  static void apply_material_recursive(Shape& s, const Material& m) {
+    s.material = m;
+    if (auto* g = dynamic_cast<Group*>(&s))
+      for (const auto& c : g->children()) apply_material_recursive(*c, m);
+  }
+
+  std::string source_;
+  std::filesystem::path base_dir_;
+  SceneLoadOptions options_;
+  std::map<std::string, Define> defines_;
+};
+
+Scene Loader::load(const YAML::Node& root) {
+  if (!root || root.IsNull()) fail(YAML::Mark{}, "empty scene: expected a list of items ('- add: camera', ...)");
+  if (!root.IsSequence()) fail(root, "a scene must be a list of items ('- add: ...' or '- define: ...'), got " + describe(root));
+  World world;
+  std::optional<CameraParams> cam;
+  YAML::Node cam_node;
+  for (const YAML::Node& item : root) {
+    const auto es = entries(item, "a scene item");
+    if (const Entry* d = find(es, "define")) {
+      check_keys(es, {"define", "value", "extend"}, "a define");
+      const std::string n = name(d->value, "a define");
+      if (is_builtin(n) || n == "camera" || n == "light") fail(d->value, "cannot redefine the built-in '" + n + "'");
+      const Entry& v = require(es, "value", item, "a define");
+      Define def{d->value, v.value, std::nullopt};
+      if (const Entry* e = find(es, "extend")) {
+        name(e->value, "'extend'");
+        def.extend = e->value;
+      }
+      defines_[n] = def;
+      continue;
+    }
+    const Entry* add = find(es, "add");
+    if (!add) {
+      std::vector<std::string> ks{"add", "define"};
+      fail(item, "a scene item needs 'add' or 'define'" + (es.empty() ? std::string() : suggestion(es[0].key, ks)));
+    }
+    const std::string kind = name(add->value, "'add'");
+    if (kind == "camera") {
+      check_keys(es, {"add", "width", "height", "field-of-view", "from", "to", "up"}, "a camera");
+      if (cam) fail(add->value, "a second camera (only one is allowed)");
+      CameraParams c;
+      const Entry& w = require(es, "width", item, "a camera");
+      const Entry& h = require(es, "height", item, "a camera");
+      c.width = integer(w.value);
+      c.height = integer(h.value);
+      if (c.width <= 0 || c.width > kMaxImageSide) fail(w.value, "camera width must be in 1..16384, got " + w.value.Scalar());
+      if (c.height <= 0 || c.height > kMaxImageSide) fail(h.value, "camera height must be in 1..16384, got " + h.value.Scalar());
+      const Entry& f = require(es, "field-of-view", item, "a camera");
+      c.fov = number(f.value);
+      if (!(c.fov > 0 && c.fov < std::numbers::pi)) fail(f.value, "field-of-view must be between 0 and pi radians, got " + f.value.Scalar());
+      c.from = point3(require(es, "from", item, "a camera").value, "from");
+      const Entry& to = require(es, "to", item, "a camera");
+      c.to = point3(to.value, "to");
+      const Entry& up = require(es, "up", item, "a camera");
+      c.up = vector3(up.value, "up");
+      const Tuple fwd = c.to - c.from;
+      if (magnitude(fwd) == 0) fail(to.value, "camera 'to' equals 'from'");
+      if (magnitude(cross(fwd, c.up)) <= 1e-12 * magnitude(fwd) * magnitude(c.up))
+        fail(up.value, "camera 'up' is zero or parallel to the view direction");
+      cam = c;
+      cam_node = add->value;
+    } else if (kind == "light") {
+      check_keys(es, {"add", "at", "intensity", "corner", "uvec", "vvec", "usteps", "vsteps", "jitter"}, "a light");
+      const Color intensity = color(require(es, "intensity", item, "a light").value, "intensity");
+      if (const Entry* corner = find(es, "corner")) {
+        // Area light (soft shadows bonus chapter): a usteps x vsteps grid of
+        // point lights at the cell centres sharing the intensity. `jitter`
+        // is accepted but the samples stay at the cell centres.
+        const Tuple c0 = point3(corner->value, "corner");
+        const Tuple u = vector3(require(es, "uvec", item, "an area light").value, "uvec");
+        const Tuple v = vector3(require(es, "vvec", item, "an area light").value, "vvec");
+        const Entry& us = require(es, "usteps", item, "an area light");
+        const Entry& vs = require(es, "vsteps", item, "an area light");
+        const int nu = integer(us.value), nv = integer(vs.value);
+        if (nu <= 0 || nu > 64) fail(us.value, "usteps must be in 1..64");
+        if (nv <= 0 || nv > 64) fail(vs.value, "vsteps must be in 1..64");
+        if (const Entry* j = find(es, "jitter")) boolean(j->value);
+        const Color each = intensity / static_cast<double>(nu * nv);
+        for (int i = 0; i < nu; ++i)
+          for (int j = 0; j < nv; ++j)
+            world.lights.push_back(PointLight{c0 + u * ((i + 0.5) / nu) + v * ((j + 0.5) / nv), each});
+      } else {
+        for (const char* k : {"uvec", "vvec", "usteps", "vsteps", "jitter"})
+          if (const Entry* e = find(es, k)) fail(e->key_node, std::string("'") + k + "' needs 'corner' (area light)");
+        world.lights.push_back(PointLight{point3(require(es, "at", item, "a light").value, "at"), intensity});
+      }
+    } else {
+      std::set<std::string> visiting;
+      auto s = shape(item, Inherited{}, visiting);
+      if (dynamic_cast<Group*>(s.get()) || dynamic_cast<Csg*>(s.get())) s->divide(kGroupBvhThreshold);
+      world.objects.push_back(std::move(s));
+    }
+  }
+  if (!cam) fail(root, "the scene has no camera (add one with '- add: camera')");
+  Camera camera(cam->width, cam->height, cam->fov);
+  camera.set_transform(view_transform(cam->from, cam->to, cam->up));
+  return Scene{std::move(world), camera};
+}
+
+std::string format_yaml_error(const std::string& source, const YAML::Exception& e) {
+  std::ostringstream os;
+  os << source << ':';
+  if (e.mark.line >= 0) os << e.mark.line + 1 << ':' << e.mark.column + 1 << ": ";
+  else os << ' ';
+  os << "YAML syntax error: " << e.msg;
+  return os.str();
+}
+
+}  // namespace
+
+Scene load_scene_from_string(const std::string& text, const std::string& source, const std::filesystem::path& base_dir,
+                             const SceneLoadOptions& options) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw SceneError(format_yaml_error(source, e));
+  }
+  try {
+    return Loader(source, base_dir, options).load(root);
+  } catch (const YAML::Exception& e) {
+    throw SceneError(format_yaml_error(source, e));
+  }
+}
+
+Scene load_scene(const std::string& path, const SceneLoadOptions& options) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError("cannot read scene '" + path + "': " + std::strerror(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw SceneError("cannot read scene '" + path + "': read error");
+  const auto dir = std::filesystem::path(path).parent_path();
+  return load_scene_from_string(ss.str(), path, dir.empty() ? std::filesystem::path(".") : dir, options);
+}
+
+}  // namespace toroid

@@ -1,0 +1,43 @@
+// Scenes in the YAML format of "The Ray Tracer Challenge" (camera, lights,
+// defines, shapes, groups, CSG, OBJ meshes) plus `add: torus`.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "toroid/render/camera.h"
+#include "toroid/render/world.h"
+#include "toroid/roots/quartic.h"
+
+namespace toroid {
+
+// Anything wrong with a scene file. what() is "FILE:LINE:COLUMN: what is
+// wrong" (1-based line and column) whenever a position is known.
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Scene {
+  World world;
+  Camera camera;
+};
+
+struct SceneLoadOptions {
+  // When set, every torus uses this solver (its own `solver:` key is ignored).
+  std::optional<QuarticSolver> solver;
+};
+
+// Reads and builds the scene. Throws SceneError.
+Scene load_scene(const std::string& path, const SceneLoadOptions& options = {});
+
+// The same from text; `source` names the text in messages and `base_dir`
+// resolves relative file names (OBJ meshes).
+Scene load_scene_from_string(const std::string& text, const std::string& source,
+                             const std::filesystem::path& base_dir, const SceneLoadOptions& options = {});
+
+// Levenshtein distance (for "did you mean" suggestions).
+int edit_distance(const std::string& a, const std::string& b);
+
+}  // namespace toroid
