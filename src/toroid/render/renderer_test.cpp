@@ -1,0 +1,87 @@
+#include "toroid/render/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "toroid/math/transform.h"
+#include "toroid/shapes/plane.h"
+#include "toroid/shapes/torus.h"
+
+namespace toroid {
+namespace {
+
+World torus_world() {
+  World w = default_world();
+  auto t = std::make_shared<Torus>(1.0, 0.3);
+  t->set_transform(translation(0, 0, -1.5) * rotation_x(1.0));
+  t->material.reflective = 0.3;
+  w.objects.push_back(t);
+  auto p = std::make_shared<Plane>();
+  p->set_transform(translation(0, -1, 0));
+  w.objects.push_back(p);
+  return w;
+}
+
+Camera test_camera() {
+  Camera c(37, 23, 1.2);
+  c.set_transform(view_transform(point(0, 1.5, -6), point(0, 0, 0), vector(0, 1, 0)));
+  return c;
+}
+
+bool same_bytes(const Canvas& a, const Canvas& b) {
+  return a.width() == b.width() && a.height() == b.height() &&
+         std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(Color)) == 0;
+}
+
+TEST(Renderer, OneSampleMatchesTheBooksRender) {
+  const World w = torus_world();
+  const Camera c = test_camera();
+  RenderOptions o;
+  o.threads = 2;
+  EXPECT_TRUE(same_bytes(render_image(c, w, o), render(c, w)));
+}
+
+TEST(Renderer, ThreadCountDoesNotChangeTheImage) {
+  const World w = torus_world();
+  const Camera c = test_camera();
+  RenderOptions o;
+  o.samples = 5;
+  o.tile_size = 8;
+  o.threads = 1;
+  RenderStats s1, s2;
+  const Canvas one = render_image(c, w, o, &s1);
+  o.threads = 2;
+  const Canvas two = render_image(c, w, o, &s2);
+  EXPECT_TRUE(same_bytes(one, two));
+  EXPECT_EQ(s1.threads, 1);
+  EXPECT_EQ(s2.threads, 2);
+  // At least the camera rays, and the same count whatever the threads.
+  EXPECT_GE(s1.rays, 37u * 23u * 5u);
+  EXPECT_EQ(s1.rays, s2.rays);
+}
+
+TEST(Renderer, SamplesStayInTheirPixel) {
+  for (int n : {1, 2, 4, 9, 10})
+    for (int s = 0; s < n; ++s) {
+      double dx, dy;
+      sample_offset(3, 7, s, n, dx, dy);
+      EXPECT_GE(dx, 0);
+      EXPECT_LT(dx, 1);
+      EXPECT_GE(dy, 0);
+      EXPECT_LT(dy, 1);
+    }
+}
+
+TEST(Renderer, ProgressEndsAtTheTotal) {
+  RenderOptions o;
+  o.threads = 2;
+  RenderProgress last;
+  o.progress = [&](const RenderProgress& p) { last = p; };
+  render_image(test_camera(), torus_world(), o);
+  EXPECT_EQ(last.pixels_done, 37 * 23);
+  EXPECT_EQ(last.pixels_total, 37 * 23);
+}
+
+}  // namespace
+}  // namespace toroid

@@ -1,0 +1,212 @@
+#include "toroid/scene/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "toroid/shapes/csg.h"
+#include "toroid/shapes/group.h"
+#include "toroid/shapes/torus.h"
+
+namespace toroid {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kScenes = fs::path(TOROID_SHARED_DIR) / "rtc-scenes";
+
+struct Expected {
+  const char* file;
+  std::size_t lights, objects;
+  int width, height;
+  double fov;
+};
+
+TEST(SceneLoader, LoadsTheSharedScenes) {
+  const Expected cases[] = {
+      {"chap7-putting-it-together.yml", 1, 6, 100, 50, 1.047},
+      {"cover.yml", 2, 19, 100, 100, 0.785},
+      {"csg_difference.kjeldahl.yml", 1, 3, 300, 150, 1.152},
+      {"cylinders.yml", 1, 11, 800, 400, 0.7854},
+      {"group.yml", 4, 4, 300, 100, 0.9},
+      {"reflect-refract.yml", 1, 13, 400, 200, 1.152},
+      // The 10 x 10 area light becomes 100 point lights.
+      {"shadow-glamour-shot.yml", 100, 4, 1920, 1080, 0.7854},
+      {"table.yml", 1, 18, 400, 200, 0.785},
+      {"three-spheres.yml", 1, 6, 1000, 500, 1.0472},
+  };
+  for (const Expected& e : cases) {
+    SCOPED_TRACE(e.file);
+    const Scene s = load_scene((kScenes / e.file).string());
+    EXPECT_EQ(s.world.lights.size(), e.lights);
+    EXPECT_EQ(s.world.objects.size(), e.objects);
+    EXPECT_EQ(s.camera.hsize(), e.width);
+    EXPECT_EQ(s.camera.vsize(), e.height);
+  }
+}
+
+TEST(SceneLoader, SharedCameraParameters) {
+  const Scene s = load_scene((kScenes / "cover.yml").string());
+  EXPECT_DOUBLE_EQ(s.camera.field_of_view(), 0.785);
+  EXPECT_TRUE(approx_equal(s.world.lights[1].position, point(-400, 50, -10)));
+}
+
+TEST(SceneLoader, TextureScenesFailNamingTheMissingFeature) {
+  for (const char* f : {"earth.yml", "skybox.yml"}) {
+    const std::string path = (kScenes / f).string();
+    try {
+      load_scene(path);
+      ADD_FAILURE() << f << " loaded";
+    } catch (const SceneError& e) {
+      const std::string msg = e.what();
+      EXPECT_EQ(msg.rfind(path + ":", 0), 0u) << msg;
+      EXPECT_NE(msg.find("texture file '"), std::string::npos) << msg;
+      EXPECT_NE(msg.find("not found"), std::string::npos) << msg;
+    }
+  }
+  // UV-mapped patterns without images: not implemented yet.
+  const std::string path = (kScenes / "checkered-sphere.yml").string();
+  try {
+    load_scene(path);
+    ADD_FAILURE() << "loaded";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ":16:13: pattern type 'map' (UV texture mapping) is not supported", 0), 0u)
+        << e.what();
+  }
+}
+
+class SceneFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("toroid_scene_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return p.string();
+  }
+
+  // Loads and returns the SceneError message ("" if it loaded).
+  std::string error_of(const std::string& text) {
+    const std::string p = write("bad.yml", text);
+    path_ = p;
+    try {
+      load_scene(p);
+    } catch (const SceneError& e) {
+      return e.what();
+    }
+    return "";
+  }
+
+  void expect_error(const std::string& text, const std::string& prefix) {
+    const std::string msg = error_of(text);
+    EXPECT_EQ(msg.rfind(path_ + ":" + prefix, 0), 0u) << "message: " << msg << "\nexpected prefix: " << prefix;
+  }
+
+  fs::path dir_;
+  std::string path_;
+};
+
+const std::string kCamera =
+    "- add: camera\n"
+    "  width: 40\n"
+    "  height: 30\n"
+    "  field-of-view: 0.8\n"
+    "  from: [0, 2, -5]\n"
+    "  to: [0, 0, 0]\n"
+    "  up: [0, 1, 0]\n"
+    "- add: light\n"
+    "  at: [-10, 10, -10]\n"
+    "  intensity: [1, 1, 1]\n";
+
+TEST_F(SceneFiles, LoadsATorusWithDefinesAndCsg) {
+  const std::string p = write("t.yml", kCamera +
+                                           "- define: glaze\n"
+                                           "  value:\n"
+                                           "    color: [1, 0.5, 0.6]\n"
+                                           "    specular: 0.5\n"
+                                           "- define: pink\n"
+                                           "  extend: glaze\n"
+                                           "  value:\n"
+                                           "    ambient: 0.3\n"
+                                           "- define: flat\n"
+                                           "  value:\n"
+                                           "    - [rotate-x, 1.5708]\n"
+                                           "- add: torus\n"
+                                           "  major: 2\n"
+                                           "  minor: 0.5\n"
+                                           "  solver: tianheng\n"
+                                           "  material: pink\n"
+                                           "  transform: [flat, [translate, 0, 1, 0]]\n"
+                                           "- add: torus\n"
+                                           "- add: csg\n"
+                                           "  operation: difference\n"
+                                           "  left: {add: torus}\n"
+                                           "  right: {type: cube, transform: [[translate, 1, 0, 0]]}\n");
+  const Scene s = load_scene(p);
+  ASSERT_EQ(s.world.objects.size(), 3u);
+  auto* t = dynamic_cast<Torus*>(s.world.objects[0].get());
+  ASSERT_NE(t, nullptr);
+  EXPECT_DOUBLE_EQ(t->major(), 2);
+  EXPECT_DOUBLE_EQ(t->minor(), 0.5);
+  EXPECT_EQ(t->solver(), QuarticSolver::Tianheng);
+  EXPECT_TRUE(approx_equal(t->material.color, Color{1, 0.5, 0.6}));
+  EXPECT_DOUBLE_EQ(t->material.specular, 0.5);
+  EXPECT_DOUBLE_EQ(t->material.ambient, 0.3);
+  // rotate-x first, then the translation.
+  EXPECT_TRUE(approx_equal(t->transform() * point(0, 0, 1), point(0, 0, 0)));
+  auto* d = dynamic_cast<Torus*>(s.world.objects[1].get());
+  ASSERT_NE(d, nullptr);
+  EXPECT_DOUBLE_EQ(d->major(), 1);
+  EXPECT_DOUBLE_EQ(d->minor(), 0.25);
+  EXPECT_NE(dynamic_cast<Csg*>(s.world.objects[2].get()), nullptr);
+  EXPECT_EQ(s.camera.hsize(), 40);
+
+  SceneLoadOptions o;
+  o.solver = QuarticSolver::Ferrari;
+  const Scene f = load_scene(p, o);
+  EXPECT_EQ(dynamic_cast<Torus*>(f.world.objects[0].get())->solver(), QuarticSolver::Ferrari);
+}
+
+TEST_F(SceneFiles, Errors) {
+  expect_error(kCamera + "- add: sphere\n  material:\n    colr: [1, 0, 0]\n",
+               "13:5: unknown key 'colr' in a material (did you mean 'color'?)");
+  expect_error(kCamera + "- add: spher\n", "11:8: unknown shape 'spher' (did you mean 'sphere'?)");
+  expect_error(kCamera + "- add: torus\n  minor: 0\n", "12:10: torus 'minor' must be > 0");
+  expect_error(kCamera + "- add: torus\n  major: -1\n", "12:10: torus 'major' must be > 0");
+  expect_error(kCamera + "- add: torus\n  major: .inf\n", "12:10: expected a finite number");
+  expect_error(kCamera + "- add: torus\n  major: abc\n", "12:10: expected a number, got 'abc'");
+  expect_error(kCamera + "- add: sphere\n  transform:\n    - [scale, 1, 0, 1]\n",
+               "13:5: singular transform");
+  expect_error(kCamera + "- add: sphere\n  transform:\n    - [translate, 1, 2]\n",
+               "13:7: 'translate' takes 3 numbers, got 2");
+  expect_error(kCamera + "- add: sphere\n  material:\n    color: [1, 0]\n", "13:12: color must have 3 numbers, got 2");
+  expect_error(kCamera + "- add: sphere\n  material: nothing\n", "12:13: undefined material 'nothing'");
+  expect_error(kCamera + "- define: a\n  extend: b\n  value: {color: [1, 1, 1]}\n- define: b\n  extend: a\n"
+                         "  value: {ambient: 1}\n- add: sphere\n  material: a\n",
+               "15:11: circular define: 'a' refers to itself");
+  expect_error(kCamera + "- add: csg\n  operation: union\n  left: {add: sphere}\n",
+               "11:8: a csg needs both 'left' and 'right' operands (missing 'right')");
+  expect_error(kCamera + "- add: csg\n  operation: unoin\n  left: {add: sphere}\n  right: {add: cube}\n",
+               "12:14: unknown csg operation 'unoin' (did you mean 'union'?)");
+  expect_error("- add: camera\n  width: 0\n  height: 30\n  field-of-view: 0.8\n  from: [0, 2, -5]\n"
+               "  to: [0, 0, 0]\n  up: [0, 1, 0]\n",
+               "2:10: camera width must be in 1..16384");
+  expect_error("- add: camera\n  width: 10\n  height: 20000\n  field-of-view: 0.8\n  from: [0, 2, -5]\n"
+               "  to: [0, 0, 0]\n  up: [0, 1, 0]\n",
+               "3:11: camera height must be in 1..16384");
+  expect_error(kCamera + "- add: sphere\n  material: {color: [1, 0, 0]\n", "13:1: YAML syntax error");
+  expect_error(kCamera + "- add: obj\n  file: missing.obj\n", "12:9: OBJ file 'missing.obj' not found");
+  expect_error(kCamera + "- add: torus\n  solver: bogus\n", "12:11: unknown solver 'bogus'");
+}
+
+}  // namespace
+}  // namespace toroid
