@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/shared_dir.h"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -79,6 +81,7 @@ TEST(ObjFileParser, TriangulatingPolygons) {
 }
 
 TEST(ObjFileParser, TrianglesInGroups) {
+  TOROID_REQUIRE_SHARED_DIR();
   const ObjFile parser = parse_obj_file(TOROID_SHARED_DIR "/rtc-features/triangles.obj");
   const auto g1 = parser.group("FirstGroup");
   const auto g2 = parser.group("SecondGroup");
@@ -95,6 +98,7 @@ TEST(ObjFileParser, TrianglesInGroups) {
 }
 
 TEST(ObjFileParser, ConvertingAnObjFileToAGroup) {
+  TOROID_REQUIRE_SHARED_DIR();
   const ObjFile parser = parse_obj_file(TOROID_SHARED_DIR "/rtc-features/triangles.obj");
   const auto g = obj_to_group(parser);
   const auto first = parser.group("FirstGroup");

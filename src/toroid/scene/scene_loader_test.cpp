@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/shared_dir.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -26,6 +28,7 @@ struct Expected {
 };
 
 TEST(SceneLoader, LoadsTheSharedScenes) {
+  TOROID_REQUIRE_SHARED_DIR();
   const Expected cases[] = {
       {"chap7-putting-it-together.yml", 1, 6, 100, 50, 1.047},
       {"cover.yml", 2, 19, 100, 100, 0.785},
@@ -49,12 +52,14 @@ TEST(SceneLoader, LoadsTheSharedScenes) {
 }
 
 TEST(SceneLoader, SharedCameraParameters) {
+  TOROID_REQUIRE_SHARED_DIR();
   const Scene s = load_scene((kScenes / "cover.yml").string());
   EXPECT_DOUBLE_EQ(s.camera.field_of_view(), 0.785);
   EXPECT_TRUE(approx_equal(s.world.lights[1].position, point(-400, 50, -10)));
 }
 
 TEST(SceneLoader, TextureScenesFailNamingTheMissingFeature) {
+  TOROID_REQUIRE_SHARED_DIR();
   for (const char* f : {"earth.yml", "skybox.yml"}) {
     const std::string path = (kScenes / f).string();
     try {
