@@ -22,7 +22,9 @@ Color lighting(const Material& m, const Shape& object, const PointLight& light, 
   Color specular = kBlack;
   const Tuple reflectv = reflect(-lightv, normalv);
   const double reflect_dot_eye = dot(reflectv, eyev);
-  if (reflect_dot_eye > 0) specular = light.intensity * (m.specular * std::pow(reflect_dot_eye, m.shininess));
+  // (No pow when the material has no highlight: same result, a tenth of the time of a shaded point.)
+  if (reflect_dot_eye > 0 && m.specular != 0)
+    specular = light.intensity * (m.specular * std::pow(reflect_dot_eye, m.shininess));
   return ambient + (diffuse + specular) * light_intensity;
 }
 

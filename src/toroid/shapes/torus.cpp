@@ -1,5 +1,7 @@
 #include "toroid/shapes/torus.h"
 
+#include <limits>
+
 #include "toroid/shapes/torus_intersect.h"
 
 namespace toroid {
@@ -9,12 +11,33 @@ BoundingBox Torus::bounds() const {
   return {point(-e, -e, -minor_), point(e, e, minor_)};
 }
 
-void Torus::local_intersect(const Ray& ray, Intersections& xs) const {
+int Torus::local_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
   const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
   double t[4];
   const int n = intersect_torus(major_, minor_, o, d, t, solver_);
-  for (int i = 0; i < n; ++i) xs.push_back({t[i], this});
+  for (int i = 0; i < n; ++i) hits[i] = {t[i], this};
+  return n;
+}
+
+bool Torus::nearest_root(const Ray& ray, double t_max, double& t) const {
+  const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+  const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+  // The query's interval is open: just below 0 admits t = 0, as hit() does.
+  constexpr double kBelowZero = -std::numeric_limits<double>::denorm_min();
+  return intersect_torus_nearest(major_, minor_, o, d, kBelowZero, t_max, &t, solver_);
+}
+
+bool Torus::local_intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const {
+  double t;
+  if (!nearest_root(ray, t_max, t)) return false;
+  hit = {t, this};
+  return true;
+}
+
+bool Torus::local_blocks(const Ray& ray, double t_max) const {
+  double t;
+  return nearest_root(ray, t_max, t);
 }
 
 Tuple Torus::local_normal_at(const Tuple& p, const Intersection&) const {

@@ -4,11 +4,11 @@
 #pragma once
 
 #include "toroid/roots/quartic.h"
-#include "toroid/shapes/shape.h"
+#include "toroid/shapes/primitive.h"
 
 namespace toroid {
 
-class Torus : public Shape {
+class Torus : public Primitive {
  public:
   // Precondition: major > 0, minor > 0, both finite (the scene loader checks).
   Torus(double major = 1.0, double minor = 0.25) : major_(major), minor_(minor) {}
@@ -19,14 +19,21 @@ class Torus : public Shape {
   QuarticSolver solver() const { return solver_; }
 
   BoundingBox bounds() const override;
-  // Appends every real root (sorted), so CSG and refraction see the ray
-  // leave and re-enter the same torus.
-  void local_intersect(const Ray& ray, Intersections& xs) const override;
+  // Every real root (sorted), so CSG and refraction see the ray leave and
+  // re-enter the same torus.
+  int local_hits(const Ray& ray, Intersection hits[kMaxHits]) const override;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
+  // The solver's nearest-root query: no list, early exit.
+  bool local_intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const override;
+  bool local_blocks(const Ray& ray, double t_max) const override;
 
  private:
-  double major_, minor_;
+  bool nearest_root(const Ray& ray, double t_max, double& t) const;
+
+  // The solver first: it fits in the tail padding of Shape (sizeof matters,
+  // scenes hold thousands of tori).
   QuarticSolver solver_ = QuarticSolver::Default;
+  double major_, minor_;
 };
 
 }  // namespace toroid
