@@ -84,18 +84,22 @@ Color shade_hit(const World& world, const Computations& comps, int remaining) {
 
 Color color_at(const World& world, const Ray& ray, int remaining) {
   ++rays_traced_on_this_thread();
-  Intersection nearest;
-  if (!intersect_nearest(world, ray, nearest)) return kBlack;
-  // Only refraction reads n1 and n2, which need every intersection along
-  // the ray (the objects that contain the hit): build the list for
-  // transparent hits alone.
-  if (nearest.object->material.transparency == 0)
+  if (indexed(world) && !world.index.any_transparent()) {
+    // Nothing refracts, so n1 and n2 go unread: the nearest hit is enough.
+    Intersection nearest;
+    if (!intersect_nearest(world, ray, nearest)) return kBlack;
     return shade_hit(world, prepare_computations(nearest, ray), remaining);
-  // One buffer per thread, reused across rays. Recursion is safe: the
-  // intersections are consumed by prepare_computations before shade_hit
-  // can cast (and so overwrite them with) the next ray.
+  }
+  // Refraction needs n1 and n2, from every intersection along the ray up
+  // to the hit (the containers algorithm). One buffer per thread, reused
+  // across rays. Recursion is safe: the intersections are consumed by
+  // prepare_computations before shade_hit can cast (and so overwrite them
+  // with) the next ray.
   thread_local Intersections xs;
-  intersect_world(world, ray, xs);
+  if (indexed(world))
+    world.index.intersect_up_to_hit(ray, xs);
+  else
+    intersect_world(world, ray, xs);
   const Intersection* h = hit(xs);
   if (h == nullptr) return kBlack;
   const Computations comps = prepare_computations(*h, ray, xs);

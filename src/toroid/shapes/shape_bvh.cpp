@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "toroid/shapes/bounds.h"
+#include "toroid/shapes/csg.h"
+#include "toroid/shapes/group.h"
 #include "toroid/shapes/shape.h"
 
 namespace toroid {
@@ -32,13 +34,16 @@ bool is_bounded(const BoundingBox& b) {
          std::isfinite(b.max.y) && std::isfinite(b.max.z);
 }
 
-// The ray with 1 / direction, computed once per query.
+// The ray with 1 / direction, computed once per query, and where the
+// query starts: t = 0 (a ray) or -infinity (the whole line).
 struct SlabRay {
   double origin[3];
   double inv[3];
-  explicit SlabRay(const Ray& r)
+  double t_min;
+  SlabRay(const Ray& r, double from)
       : origin{r.origin.x, r.origin.y, r.origin.z},
-        inv{1.0 / r.direction.x, 1.0 / r.direction.y, 1.0 / r.direction.z} {}
+        inv{1.0 / r.direction.x, 1.0 / r.direction.y, 1.0 / r.direction.z},
+        t_min(from) {}
 };
 
 }  // namespace
@@ -52,22 +57,36 @@ struct ShapeBvh::Item {
 namespace {
 
 // Where the ray enters the node's box, when it meets it at some
-// 0 <= t <= t_max (the test of BoundingBox::intersects).
+// r.t_min <= t <= t_max (for t_min = 0, the test of BoundingBox::intersects).
 template <typename Node>
 bool enters(const Node& n, const SlabRay& r, double t_max, double& entry) {
   double tmin = -BoundingBox::kInf, tmax = BoundingBox::kInf;
   for (int a = 0; a < 3; ++a) detail::clip_slab(n.lo[a], n.hi[a], r.origin[a], r.inv[a], tmin, tmax);
-  if (!(tmin <= tmax && tmax >= 0 && tmin <= t_max)) return false;
-  entry = tmin > 0 ? tmin : 0;
+  if (!(tmin <= tmax && tmax >= r.t_min && tmin <= t_max)) return false;
+  entry = tmin > r.t_min ? tmin : r.t_min;
   return true;
 }
 
+}  // namespace
+
+namespace {
+
+// Whether `s` or a shape below it refracts.
+bool has_transparent(const Shape& s) {
+  if (s.material.transparency > 0) return true;
+  if (const auto* g = dynamic_cast<const Group*>(&s))
+    for (const auto& child : g->children())
+      if (has_transparent(*child)) return true;
+  if (const auto* c = dynamic_cast<const Csg*>(&s)) return has_transparent(*c->left()) || has_transparent(*c->right());
+  return false;
+}
 }  // namespace
 
 ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shapes.size()) {
   std::vector<Item> items;
   items.reserve(shapes.size());
   for (const auto& s : shapes) {
+    if (has_transparent(*s)) any_transparent_ = true;
     const BoundingBox b = s->parent_space_bounds();
     if (b.empty()) continue;  // nothing to hit (an empty group)
     if (!is_bounded(b)) {
@@ -117,14 +136,14 @@ std::uint32_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std::
   return index;
 }
 
-// Walks the boxes the ray enters at some 0 <= t <= t_max, nearer child
+// Walks the boxes the ray enters at some t_min <= t <= t_max, nearer child
 // first, and calls stop(shape) for the shapes in their leaves, until it
 // returns true (then so does walk). `t_max` is read again at every step:
 // the caller's callback shortens it as hits come closer, and boxes waiting
 // on the stack beyond it are skipped.
 template <typename Stop>
-bool ShapeBvh::walk(const Ray& ray, const double& t_max, Stop&& stop) const {
-  const SlabRay r(ray);
+bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const {
+  const SlabRay r(ray, t_min);
   double entry;
   if (nodes_.empty() || !enters(nodes_[0], r, t_max, entry)) return false;
   struct Pending {
@@ -175,7 +194,7 @@ bool ShapeBvh::intersect_nearest(const Ray& ray, double t_max, Intersection& hit
     return false;  // look on: a nearer hit may follow
   };
   for (const Shape* s : unbounded_) try_shape(s);
-  walk(ray, t_max, try_shape);
+  walk(ray, 0, t_max, try_shape);
   return found;
 }
 
@@ -183,7 +202,22 @@ bool ShapeBvh::blocks(const Ray& ray, double t_max) const {
   auto blocked_by = [&](const Shape* s) { return s->blocks(ray, t_max); };
   for (const Shape* s : unbounded_)
     if (blocked_by(s)) return true;
-  return walk(ray, t_max, blocked_by);
+  return walk(ray, 0, t_max, blocked_by);
+}
+
+void ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
+  xs.clear();
+  double t_hit = BoundingBox::kInf;
+  auto add_shape = [&](const Shape* s) {
+    const std::size_t first = xs.size();
+    s->intersect(ray, xs);
+    for (std::size_t i = first; i < xs.size(); ++i)
+      if (xs[i].t >= 0 && xs[i].t < t_hit) t_hit = xs[i].t;
+    return false;
+  };
+  for (const Shape* s : unbounded_) add_shape(s);
+  walk(ray, -BoundingBox::kInf, t_hit, add_shape);
+  sort_intersections(xs);
 }
 
 std::size_t ShapeBvh::bytes() const {

@@ -35,6 +35,15 @@ class ShapeBvh {
   // Shape::blocks over every indexed shape.
   bool blocks(const Ray& ray, double t_max) const;
 
+  // Whether some indexed shape, or a shape below one, is transparent (has
+  // refraction): then shading needs intersect_up_to_hit.
+  bool any_transparent() const { return any_transparent_; }
+  // Replaces xs with the intersections, sorted by t, of the shapes whose
+  // box the ray's line meets before the nearest hit (t >= 0) is passed: at
+  // least every intersection up to the hit, negative t included, which is
+  // what the containers algorithm (prepare_computations) reads.
+  void intersect_up_to_hit(const Ray& ray, Intersections& xs) const;
+
   // Memory the index holds (nodes and shape lists), for the memory report.
   std::size_t bytes() const;
 
@@ -51,12 +60,13 @@ class ShapeBvh {
 
   std::uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end);
   template <typename Stop>
-  bool walk(const Ray& ray, const double& t_max, Stop&& stop) const;
+  bool walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const;
 
   std::vector<Node> nodes_;
   std::vector<const Shape*> shapes_;     // bounded shapes, in leaf order
   std::vector<const Shape*> unbounded_;  // tested by every query
   std::size_t size_ = 0;
+  bool any_transparent_ = false;
 };
 
 }  // namespace toroid
