@@ -16,6 +16,12 @@ namespace toroid {
 class Group;
 
 class Shape {
+  // The object-to-parent transform's inverse, first: the data members are
+  // ordered so that the one-byte flag comes last, and a subclass's small
+  // field fits in the tail padding (a scene may hold many thousands of
+  // shapes; see docs/performance.md).
+  Affine inverse_;
+
  public:
   Shape() = default;
   Shape(const Shape&) = delete;
@@ -31,9 +37,9 @@ class Shape {
   void set_transform(const Matrix4& m);
 
   Material material;
+  const Shape* parent = nullptr;
   // Shapes with casts_shadow == false are skipped by shadow rays (YAML `shadow: false`).
   bool casts_shadow = true;
-  const Shape* parent = nullptr;
 
   // Appends the intersections of a ray given in the parent's space.
   void intersect(const Ray& ray, Intersections& xs) const { local_intersect(to_object_space(ray), xs); }
@@ -91,8 +97,6 @@ class Shape {
 
  private:
   Ray to_object_space(const Ray& ray) const { return {inverse_ * ray.origin, inverse_ * ray.direction}; }
-
-  Affine inverse_;
 };
 
 }  // namespace toroid

@@ -11,7 +11,11 @@ BoundingBox Torus::bounds() const {
   return {point(-e, -e, -minor_), point(e, e, minor_)};
 }
 
+AnnularCylinder Torus::washer() const { return {major_ - minor_, major_ + minor_, minor_}; }
+
 int Torus::local_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (!washer().may_meet(ray.origin, ray.direction, -kInf, kInf)) return 0;
   const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
   const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
   double t[4];
@@ -21,10 +25,13 @@ int Torus::local_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
 }
 
 bool Torus::nearest_root(const Ray& ray, double t_max, double& t) const {
-  const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-  const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
   // The query's interval is open: just below 0 admits t = 0, as hit() does.
   constexpr double kBelowZero = -std::numeric_limits<double>::denorm_min();
+  // Most rays that reach a torus's box miss the torus, or meet it beyond
+  // t_max (a nearer hit, the light): the washer turns them away cheaply.
+  if (!washer().may_meet(ray.origin, ray.direction, kBelowZero, t_max)) return false;
+  const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+  const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
   return intersect_torus_nearest(major_, minor_, o, d, kBelowZero, t_max, &t, solver_);
 }
 

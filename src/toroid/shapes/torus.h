@@ -4,6 +4,7 @@
 #pragma once
 
 #include "toroid/roots/quartic.h"
+#include "toroid/shapes/annular_cylinder.h"
 #include "toroid/shapes/primitive.h"
 
 namespace toroid {
@@ -28,6 +29,8 @@ class Torus : public Primitive {
   bool local_blocks(const Ray& ray, double t_max) const override;
 
  private:
+  // The bounding washer: the solver runs only for rays that may meet it.
+  AnnularCylinder washer() const;
   bool nearest_root(const Ray& ray, double t_max, double& t) const;
 
   // The solver first: it fits in the tail padding of Shape (sizeof matters,
