@@ -410,6 +410,37 @@ class Loader {
     }
   }
 
+  // RenderMan's partial torus: `theta-max` in (0, 2 pi], `phi-min` <
+  // `phi-max` within [-2 pi, 2 pi] and at most 2 pi apart (radians). Values
+  // within 1e-4 beyond a limit (6.2832 for 2 pi) are taken as the limit.
+  TorusSweep torus_sweep(const std::vector<Entry>& es) const {
+    constexpr double kTwoPi = TorusSweep::kTwoPi, kSlack = 1e-4;
+    TorusSweep sw;
+    if (const Entry* e = find(es, "theta-max")) {
+      sw.theta_max = number(e->value);
+      if (!(sw.theta_max > 0 && sw.theta_max <= kTwoPi + kSlack))
+        fail(e->value, "torus 'theta-max' must be in (0, 2 pi] radians, got " + e->value.Scalar());
+      sw.theta_max = std::min(sw.theta_max, kTwoPi);
+    }
+    const Entry* lo = find(es, "phi-min");
+    const Entry* hi = find(es, "phi-max");
+    for (const Entry* e : {lo, hi}) {
+      if (!e) continue;
+      const double v = number(e->value);
+      if (std::abs(v) > kTwoPi + kSlack)
+        fail(e->value, "torus '" + e->key + "' must be in [-2 pi, 2 pi] radians, got " + e->value.Scalar());
+      (e == lo ? sw.phi_min : sw.phi_max) = std::clamp(v, -kTwoPi, kTwoPi);
+    }
+    const YAML::Node where = hi ? hi->value : lo ? lo->value : YAML::Node();
+    if (!(sw.phi_min < sw.phi_max))
+      fail(where, "torus 'phi-max' must be greater than 'phi-min' (" + std::to_string(sw.phi_max) +
+                      " <= " + std::to_string(sw.phi_min) + ")");
+    if (sw.phi_max - sw.phi_min > kTwoPi + kSlack)
+      fail(where, "torus 'phi-max' - 'phi-min' must be at most 2 pi radians");
+    sw.phi_max = std::min(sw.phi_max, sw.phi_min + kTwoPi);
+    return sw;
+  }
+
   static void set_shadow_recursive(Shape& s, bool casts) {
     s.casts_shadow = casts;
     if (auto* g = dynamic_cast<Group*>(&s))
@@ -435,7 +466,8 @@ class Loader {
     else if (kind == "group") allowed.push_back("children");
     else if (kind == "csg") allowed.insert(allowed.end(), {"operation", "left", "right"});
     else if (kind == "obj") allowed.push_back("file");
-    else if (kind == "torus") allowed.insert(allowed.end(), {"major", "minor", "solver"});
+    else if (kind == "torus")
+      allowed.insert(allowed.end(), {"major", "minor", "solver", "theta-max", "phi-min", "phi-max", "spindle"});
     check_keys(es, allowed, "a " + kind);
 
     Material material = inh.material ? *inh.material : Material{};
@@ -488,6 +520,13 @@ class Loader {
         t->set_solver(*sv);
       }
       if (options_.solver) t->set_solver(*options_.solver);
+      t->set_sweep(torus_sweep(es));
+      if (const Entry* e = find(es, "spindle")) {
+        const std::string v = name(e->value, "spindle");
+        if (v != "whole" && v != "outer")
+          fail(e->value, "unknown spindle surface '" + v + "' (use whole or outer)" + suggestion(v, {"whole", "outer"}));
+        t->set_spindle(v == "outer" ? SpindleSurface::Outer : SpindleSurface::Whole);
+      }
       s = t;
     } else if (kind == "group") {
       auto g = std::make_shared<Group>();
@@ -600,9 +639,7 @@ Scene Loader::load(const YAML::Node& root) {
       check_keys(es, {"add", "at", "intensity", "corner", "uvec", "vvec", "usteps", "vsteps", "jitter"}, "a light");
       const Color intensity = color(require(es, "intensity", item, "a light").value, "intensity");
       if (const Entry* corner = find(es, "corner")) {
-        // Area light (soft shadows bonus chapter): a usteps x vsteps grid of
-        // point lights at the cell centres sharing the intensity. `jitter`
-        // is accepted but the samples stay at the cell centres.
+        // Area light (soft shadows bonus chapter).
         const Tuple c0 = point3(corner->value, "corner");
         const Tuple u = vector3(require(es, "uvec", item, "an area light").value, "uvec");
         const Tuple v = vector3(require(es, "vvec", item, "an area light").value, "vvec");
@@ -611,11 +648,9 @@ Scene Loader::load(const YAML::Node& root) {
         const int nu = integer(us.value), nv = integer(vs.value);
         if (nu <= 0 || nu > 64) fail(us.value, "usteps must be in 1..64");
         if (nv <= 0 || nv > 64) fail(vs.value, "vsteps must be in 1..64");
-        if (const Entry* j = find(es, "jitter")) boolean(j->value);
-        const Color each = intensity / static_cast<double>(nu * nv);
-        for (int i = 0; i < nu; ++i)
-          for (int j = 0; j < nv; ++j)
-            world.lights.push_back(PointLight{c0 + u * ((i + 0.5) / nu) + v * ((j + 0.5) / nv), each});
+        bool jitter = false;
+        if (const Entry* j = find(es, "jitter")) jitter = boolean(j->value);
+        world.area_lights.emplace_back(c0, u, nu, v, nv, intensity, jitter);
       } else {
         for (const char* k : {"uvec", "vvec", "usteps", "vsteps", "jitter"})
           if (const Entry* e = find(es, k)) fail(e->key_node, std::string("'") + k + "' needs 'corner' (area light)");
