@@ -244,6 +244,19 @@ TEST(SceneLoader, TheGlamourShotHasAJitteredAreaLight) {
   EXPECT_TRUE(approx_equal(l.uvec, vector(0.2, 0, 0)));
 }
 
+TEST(SceneLoader, TheProjectScenesLoad) {
+  int scenes = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(TOROID_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().string());
+    const Scene s = load_scene(entry.path().string());
+    EXPECT_FALSE(s.world.objects.empty());
+    EXPECT_FALSE(s.world.lights.empty() && s.world.area_lights.empty());
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 4);  // bagels, half-eaten-doughnut, spindle-torus, soft-shadow-doughnut
+}
+
 TEST_F(SceneFiles, PartialTorusErrors) {
   expect_error(kCamera + "- add: torus\n  theta-max: 0\n", "12:14: torus 'theta-max' must be in (0, 2 pi]");
   expect_error(kCamera + "- add: torus\n  theta-max: 7\n", "12:14: torus 'theta-max' must be in (0, 2 pi]");
