@@ -19,19 +19,20 @@ AreaLight::AreaLight(const Tuple& corner_, const Tuple& full_uvec, int usteps_, 
       intensity(intensity_),
       jitter(jitter_) {}
 
-void AreaLight::jitter_at(const Tuple& p, int u, int v, double& ju, double& jv) const {
-  if (!jitter) {
-    ju = jv = 0.5;
-    return;
-  }
-  const std::uint64_t key = splitmix64(std::bit_cast<std::uint64_t>(p.x) ^
-                                       splitmix64(std::bit_cast<std::uint64_t>(p.y) ^
-                                                  splitmix64(std::bit_cast<std::uint64_t>(p.z))));
-  const std::uint64_t cell = static_cast<std::uint64_t>(v) * static_cast<std::uint64_t>(usteps) +
-                             static_cast<std::uint64_t>(u);
-  const std::uint64_t h1 = splitmix64(key ^ (cell * 0x632be59bd9b4e019ULL));
-  ju = unit_interval(h1);
-  jv = unit_interval(splitmix64(h1));
+std::uint64_t AreaLight::jitter_key(const Tuple& p) const {
+  if (!jitter) return 0;
+  return splitmix64(std::bit_cast<std::uint64_t>(p.x) ^
+                    splitmix64(std::bit_cast<std::uint64_t>(p.y) ^ splitmix64(std::bit_cast<std::uint64_t>(p.z))));
+}
+
+Tuple AreaLight::sample(std::uint64_t key, int u, int v) const {
+  if (!jitter) return point_on_light(u, v);
+  const std::uint64_t cell =
+      static_cast<std::uint64_t>(v) * static_cast<std::uint64_t>(usteps) + static_cast<std::uint64_t>(u);
+  // One hash per sample; its two 32-bit halves are the offsets.
+  const std::uint64_t h = splitmix64(key ^ (cell * 0x632be59bd9b4e019ULL));
+  constexpr double k2to32 = 0x1.0p-32;
+  return point_on_light(u, v, static_cast<double>(h >> 32) * k2to32, static_cast<double>(h & 0xffffffffULL) * k2to32);
 }
 
 bool AreaLight::in_front_of(const Tuple& p, const Tuple& normalv) const {

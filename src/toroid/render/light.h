@@ -2,6 +2,8 @@
 // light of the bonus chapter "Soft shadows".
 #pragma once
 
+#include <cstdint>
+
 #include "toroid/math/color.h"
 #include "toroid/math/tuple.h"
 
@@ -16,7 +18,7 @@ struct PointLight {
 // full_vvec, cut into usteps x vsteps cells with one sample each: a shade
 // sends one shadow ray per cell and averages the cells' diffuse and specular
 // light. With `jitter` each sample lies at a pseudo-random place in its cell,
-// a hash of the shaded point and the cell (see jitter_at), which trades the
+// a hash of the shaded point and the cell (see sample), which trades the
 // banding of fixed samples for noise and keeps every render identical.
 struct AreaLight {
   // Preconditions: usteps >= 1, vsteps >= 1.
@@ -37,15 +39,13 @@ struct AreaLight {
   Tuple point_on_light(int u, int v, double ju = 0.5, double jv = 0.5) const {
     return corner + uvec * (u + ju) + vvec * (v + jv);
   }
-  // The offsets of cell (u, v)'s sample when shading `point`: the centre
-  // without jitter, else a hash of the point's coordinates and the cell.
-  void jitter_at(const Tuple& point, int u, int v, double& ju, double& jv) const;
-  // The sample of cell (u, v) when shading `point`.
-  Tuple sample_for(const Tuple& point, int u, int v) const {
-    double ju, jv;
-    jitter_at(point, u, v, ju, jv);
-    return point_on_light(u, v, ju, jv);
-  }
+  // What places every cell's jittered sample when shading `point`: a hash of
+  // the point's coordinates (computed once per shade).
+  std::uint64_t jitter_key(const Tuple& point) const;
+  // The sample of cell (u, v) for a jitter key: the cell's centre without
+  // jitter, else an offset in [0, 1)^2 within the cell hashed from the key and
+  // the cell.
+  Tuple sample(std::uint64_t jitter_key, int u, int v) const;
   // Whether some of the light lies in front of (or on) the plane through
   // `point` with normal `normalv`: if not, no sample can light the point.
   bool in_front_of(const Tuple& point, const Tuple& normalv) const;

@@ -1,6 +1,7 @@
 #include "toroid/render/lighting.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include "toroid/render/pattern.h"
 
@@ -44,9 +45,10 @@ Color lighting(const Material& m, const Shape& object, const AreaLight& light, c
   const Color ambient = effective * m.ambient;
   if (light_intensity <= 0) return ambient;
   Color sum = kBlack;
+  const std::uint64_t key = light.jitter_key(point);
   for (int v = 0; v < light.vsteps; ++v)
     for (int u = 0; u < light.usteps; ++u)
-      sum += diffuse_specular(m, effective, light.intensity, light.sample_for(point, u, v), point, eyev, normalv);
+      sum += diffuse_specular(m, effective, light.intensity, light.sample(key, u, v), point, eyev, normalv);
   return ambient + sum * (light_intensity / light.samples);
 }
 

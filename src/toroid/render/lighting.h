@@ -26,7 +26,7 @@ inline Color lighting(const Material& material, const Shape& object, const Point
 }
 
 // An area light: ambient once, plus the diffuse and specular light of every
-// sample (light.sample_for(point, u, v)) averaged, times light_intensity.
+// sample (light.sample(light.jitter_key(point), u, v)) averaged, times light_intensity.
 Color lighting(const Material& material, const Shape& object, const AreaLight& light, const Tuple& point,
                const Tuple& eyev, const Tuple& normalv, double light_intensity);
 

@@ -62,9 +62,10 @@ double intensity_at(const PointLight& light, const Tuple& point, const World& wo
 
 double intensity_at(const AreaLight& light, const Tuple& point, const World& world) {
   int lit = 0;
+  const std::uint64_t key = light.jitter_key(point);
   for (int v = 0; v < light.vsteps; ++v)
     for (int u = 0; u < light.usteps; ++u)
-      if (!is_shadowed(world, light.sample_for(point, u, v), point)) ++lit;
+      if (!is_shadowed(world, light.sample(key, u, v), point)) ++lit;
   return static_cast<double>(lit) / light.samples;
 }
 

@@ -43,7 +43,7 @@ bool is_shadowed(const World& world, const Tuple& point, const PointLight& light
 bool is_shadowed(const World& world, const Tuple& light_position, const Tuple& point);
 
 // The fraction of the light that reaches `point`: 0 or 1 for a point light,
-// the fraction of unshadowed samples (light.sample_for) for an area light.
+// the fraction of unshadowed samples (light.sample) for an area light.
 double intensity_at(const PointLight& light, const Tuple& point, const World& world);
 double intensity_at(const AreaLight& light, const Tuple& point, const World& world);
 

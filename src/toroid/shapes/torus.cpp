@@ -1,6 +1,7 @@
 #include "toroid/shapes/torus.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "toroid/shapes/torus_intersect.h"
@@ -40,6 +41,7 @@ bool TorusSweep::valid() const {
 }
 
 void Torus::set_sweep(const TorusSweep& sweep) {
+  assert(sweep.valid());
   sweep_ = sweep;
   keeps_all_ = sweep_.whole() && spindle_ == SpindleSurface::Whole;
   bounds_changed();

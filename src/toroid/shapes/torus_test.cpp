@@ -208,6 +208,20 @@ std::shared_ptr<Torus> partial_torus(double theta_max, double phi_min = -M_PI, d
   return t;
 }
 
+TEST(Torus, SweepRanges) {
+  EXPECT_TRUE(TorusSweep{}.valid());
+  EXPECT_TRUE(TorusSweep{}.whole());
+  EXPECT_TRUE((TorusSweep{M_PI, M_PI / 2, 3 * M_PI / 2}.valid()));
+  EXPECT_FALSE((TorusSweep{M_PI, M_PI / 2, 3 * M_PI / 2}.whole()));
+  EXPECT_TRUE((TorusSweep{2 * M_PI, 0, 2 * M_PI}.whole()));
+  EXPECT_FALSE((TorusSweep{0, -M_PI, M_PI}.valid()));
+  EXPECT_FALSE((TorusSweep{7, -M_PI, M_PI}.valid()));
+  EXPECT_FALSE((TorusSweep{M_PI, 1, 1}.valid()));
+  EXPECT_FALSE((TorusSweep{M_PI, -4, 4}.valid()));
+  EXPECT_FALSE((TorusSweep{M_PI, -7, 0}.valid()));
+  EXPECT_FALSE((TorusSweep{NAN, -M_PI, M_PI}.valid()));
+}
+
 TEST(Torus, ARayHittingTheRemovedHalfPassesToTheNextRoot) {
   const auto t = partial_torus(M_PI);  // y >= 0 kept
   // Along y at x = 1: the whole torus is met at y = -0.75 and y = 0.75.
