@@ -51,7 +51,7 @@ class PpmScanner {
  public:
   PpmScanner(std::string_view data, const std::string& source) : data_(data), source_(source) {}
 
-  // The next word (empty at the end of the data); word_line() is its line.
+  // The next word (empty at the end of the data).
   std::string_view word() {
     while (pos_ < data_.size()) {
       const char c = data_[pos_];
@@ -66,9 +66,10 @@ class PpmScanner {
     }
     const std::size_t start = pos_;
     while (pos_ < data_.size() && data_[pos_] != '#' && !std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
-    word_line_ = line_;
+    if (pos_ > start) word_line_ = line_;
     return data_.substr(start, pos_ - start);
   }
+  // The line of the last word read: at the end of the data, where it ends.
   int word_line() const { return word_line_; }
 
   // An unsigned integer word in [min, max]; `what` names it in messages.
