@@ -340,9 +340,13 @@ class Loader {
     if (mapping == "cube") {
       check_keys(es, {"type", "mapping", "left", "right", "front", "back", "up", "down", "transform"},
                  "a cube map pattern");
-      auto face = [&](const char* k) { return uv_pattern(require(es, k, node, "a cube map pattern").value); };
-      return std::make_shared<CubeMapPattern>(face("left"), face("front"), face("right"), face("back"), face("up"),
-                                              face("down"));
+      const std::vector<std::string> faces{"left", "right", "front", "back", "up", "down"};
+      for (const std::string& f : faces) require(es, f, node, "a cube map pattern");
+      // Read in file order, so that the first bad face in the file is reported.
+      std::map<std::string, std::shared_ptr<const UvPattern>> uv;
+      for (const Entry& e : es)
+        if (std::find(faces.begin(), faces.end(), e.key) != faces.end()) uv[e.key] = uv_pattern(e.value);
+      return std::make_shared<CubeMapPattern>(uv["left"], uv["front"], uv["right"], uv["back"], uv["up"], uv["down"]);
     }
     std::vector<std::string> keys{"type", "mapping", "uv_pattern", "transform"};
     if (mapping == "torus") keys.insert(keys.end(), {"major", "minor"});
