@@ -17,6 +17,7 @@ class TextureMapPattern : public Pattern {
   // Precondition: uv_pattern and mapping are set.
   TextureMapPattern(std::shared_ptr<const UvPattern> uv_pattern, UvMapping mapping)
       : uv_pattern_(std::move(uv_pattern)), mapping_(std::move(mapping)) {}
+  const UvPattern& uv_pattern() const { return *uv_pattern_; }
   Color pattern_at(const Tuple& p) const override;
 
  private:

@@ -290,8 +290,11 @@ class Loader {
   std::shared_ptr<const Canvas> image(const YAML::Node& file_node) const {
     const std::string file = name(file_node, "file");
     const std::filesystem::path p = resolve(file);
-    if (!std::filesystem::exists(p)) fail(file_node, "image file '" + file + "' not found (looked for '" + p.string() + "')");
-    const std::string key = p.lexically_normal().string();
+    std::error_code ec;  // when the file cannot even be looked at, read_image says why
+    if (!std::filesystem::exists(p, ec) && !ec)
+      fail(file_node, "image file '" + file + "' not found (looked for '" + p.string() + "')");
+    const std::filesystem::path canonical = std::filesystem::canonical(p, ec);
+    const std::string key = ec ? p.string() : canonical.string();
     if (auto it = images_.find(key); it != images_.end()) return it->second;
     try {
       return images_[key] = std::make_shared<const Canvas>(read_image(p.string()));
@@ -641,7 +644,7 @@ class Loader {
   SceneLoadOptions options_;
   std::map<std::string, Define> defines_;
   mutable std::optional<TorusRadii> material_torus_;                      // see MaterialTorus
-  mutable std::map<std::string, std::shared_ptr<const Canvas>> images_;  // by normalised path
+  mutable std::map<std::string, std::shared_ptr<const Canvas>> images_;  // by canonical path
 };
 
 Scene Loader::load(const YAML::Node& root) {

@@ -9,6 +9,7 @@
 #include "support/temp_dir.h"
 #include "toroid/io/image_writer.h"
 #include "toroid/render/pattern.h"
+#include "toroid/render/texture_map.h"
 #include "toroid/scene/scene_loader.h"
 #include "toroid/shapes/shape.h"
 
@@ -112,6 +113,25 @@ TEST_F(MapPatterns, EveryMappingAndUvPatternOfTheBooksScenes) {
   EXPECT_APPROX(colour(s, 3, point(0.2, -1, 0.3)), Color(0, 1, 1));
   EXPECT_APPROX(colour(s, 3, point(-0.9, 0, 1)), Color(1, 0, 0));
   EXPECT_APPROX(colour(s, 3, point(0.9, 0, 1)), Color(0, 0, 1));
+}
+
+// Eight patterns naming one image (as the book's skybox and mapped cubes
+// do) share one canvas: the file is read once.
+TEST_F(MapPatterns, AnImageNamedTwiceIsReadOnce) {
+  write_image(Canvas(4, 2), dir_.file("shared.ppm"));
+  const std::string sphere =
+      "- add: sphere\n"
+      "  material:\n"
+      "    pattern: {type: map, mapping: spherical, uv_pattern: {type: image, file: shared.ppm}}\n";
+  const Scene s = load(sphere + sphere + "- add: sphere\n  material:\n    pattern: {type: map, mapping: spherical, "
+                                         "uv_pattern: {type: image, file: ./shared.ppm}}\n");
+  auto canvas_of = [&](std::size_t i) {
+    const auto& map = dynamic_cast<const TextureMapPattern&>(*s.world.objects.at(i)->material.pattern);
+    return &dynamic_cast<const UvImage&>(map.uv_pattern()).canvas();
+  };
+  EXPECT_EQ(canvas_of(0), canvas_of(1));
+  EXPECT_EQ(canvas_of(0), canvas_of(2));
+  EXPECT_EQ(canvas_of(0)->width(), 4);
 }
 
 // 8 x 4 checkers on tori: either side of the top of the tube (v = 0.25)
