@@ -11,11 +11,15 @@
 //  2. rho(t) is the distance to a line, so rho'' = K / rho^3 with K constant
 //     along the ray; hence h_out'' = 2|d|^2 - 2 R K / rho^3 changes sign at
 //     most twice, at points known in closed form, and h_in is convex. Cut at
-//     those points, each piece is convex or concave: one extremum at most, two
-//     monotone parts, one root each. Newton from the side Fourier's condition
-//     names converges without overshoot; bisection guards it anyway. So no
-//     root is missed, whatever the structure: double roots (tangent rays) are
-//     the extrema that touch zero.
+//     those points, each piece is convex or concave, which is known from
+//     where it lies: a sign change between its ends is one root; equal signs
+//     on the side that allows it are none or two, decided by where the end
+//     tangents cross (their crossing bounds h, or h there has the other sign
+//     and brackets both roots). Each root is polished by Halley's iteration
+//     (h'' and h''' come free with h), guarded by bisection, and stops as soon
+//     as the error predicted from the derivatives is below the tolerance. So
+//     no root is missed, whatever the structure: double roots (tangent rays)
+//     are extrema that touch zero, settled in double-double.
 //  3. The origin is first moved, exactly (double-double), to the ray's point
 //     nearest the centre, so that far cameras lose nothing; t is returned
 //     relative to the original origin.
@@ -24,10 +28,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#ifndef TOROID_COUNT_EVAL
-#define TOROID_COUNT_EVAL() ((void)0)
-#endif
 
 namespace toroid {
 namespace {
@@ -115,23 +115,22 @@ class TorusFactor {
   // right. h'' = 2|d|^2 + sign 2 R K / rho^3 and h''' = -3 (h'' - 2|d|^2) rho'/rho
   // cost no extra square root.
   Sample sample(double s, double side = 1.0) const {
-    TOROID_COUNT_EVAL();
     double p[3];
-    for (int i = 0; i < 3; ++i) p[i] = o_hi_[i] + std::fma(s, d_[i], o_lo_[i]);
+    for (int i = 0; i < 3; ++i) p[i] = o_hi_[i] + (s * d_[i] + o_lo_[i]);
     const double rho2 = p[0] * p[0] + p[1] * p[1];
     const double rho = std::sqrt(rho2);
     const double a = rho + sign_ * R_;  // rho - R, or rho + R
     const double h = (a - r_) * (a + r_) + p[2] * p[2];
     if (rho == 0) return {s, h, 2.0 * (a * side * std::sqrt(c_) + p[2] * d_[2]), 2.0 * dd_, 0.0};
-    const double drho = (p[0] * d_[0] + p[1] * d_[1]) / rho;
-    const double k = sign_ * 2.0 * R_ * K_ / (rho2 * rho);
-    return {s, h, 2.0 * (a * drho + p[2] * d_[2]), 2.0 * dd_ + k, -3.0 * k * drho / rho};
+    const double inv_rho = 1.0 / rho;
+    const double drho = (p[0] * d_[0] + p[1] * d_[1]) * inv_rho;
+    const double k = sign_ * 2.0 * R_ * K_ * (inv_rho * inv_rho * inv_rho);
+    return {s, h, 2.0 * (a * drho + p[2] * d_[2]), 2.0 * dd_ + k, -3.0 * k * drho * inv_rho};
   }
 
   // h at s in double-double arithmetic: used where double rounding would
   // decide the answer (near-tangent rays, whose two roots are ill-conditioned).
   double eval_precise(double s) const {
-    TOROID_COUNT_EVAL();
     DoubleDouble p[3];
     for (int i = 0; i < 3; ++i) p[i] = dd_add({o_hi_[i], o_lo_[i]}, two_prod(s, d_[i]));
     const DoubleDouble rho = dd_sqrt(dd_add(dd_mul(p[0], p[0]), dd_mul(p[1], p[1])));
@@ -176,8 +175,10 @@ double solve_monotone(const F& f, double lo, double hi, bool lo_negative, double
 // A first guess inside (lo, hi): the Newton step from `from` if it lands
 // inside, else the midpoint.
 double first_guess(const Sample& from, double lo, double hi) {
-  const double x = from.s - from.h / from.dh;
-  return x > lo && x < hi ? x : 0.5 * (lo + hi);
+  const double newton = from.s - from.h / from.dh;
+  const double x = from.s - 2 * from.h * from.dh / (2 * from.dh * from.dh - from.h * from.d2h);
+  if (x > lo && x < hi) return x;
+  return newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
 }
 
 // Collects the roots of one factor, in ascending order, piece by piece. On a
@@ -352,10 +353,13 @@ int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3
     if (f.K() == 0) {
       if (s_axis > lo && s_axis < hi) axis_cut[ncut] = true, cuts[ncut++] = s_axis;
     } else if (f.is_outer()) {
-      const double rho_i = std::cbrt(f.major() * f.K() / f.dd());
-      const double excess = rho_i * rho_i - f.K() / f.c();
-      if (excess > 0) {
-        const double hw = std::sqrt(excess / f.c());
+      // h_out'' < 0 somewhere iff it is at the ray's point nearest the axis,
+      // rho_min^2 = K / c: iff (R K / |d|^2)^2 > (K / c)^3. Only then is the
+      // cube root needed.
+      const double rho_i3 = f.major() * f.K() / f.dd(), rho_min2 = f.K() / f.c();
+      if (rho_i3 * rho_i3 > rho_min2 * rho_min2 * rho_min2) {
+        const double rho_i = std::cbrt(rho_i3);
+        const double hw = std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c());
         concave_lo = s_axis - hw;
         concave_hi = s_axis + hw;
         if (concave_lo > lo && concave_lo < hi) cuts[ncut++] = concave_lo;
