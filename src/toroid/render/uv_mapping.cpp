@@ -18,10 +18,12 @@ double wrap(double a, double m) {
   return r < 0 ? r + m : r;
 }
 
-// An angle in (-pi, pi] as turns in [0, 1): -pi and pi both give 0.5.
+// An angle in (-pi, 2 pi) as turns in [0, 1): -pi and pi both give 0.5, and
+// nothing rounds up to 1.
 double turns(double angle) {
-  const double t = angle / kTwoPi;
-  return t < 0 ? (t + 1 < 1 ? t + 1 : 0.0) : t;
+  double t = angle / kTwoPi;
+  if (t < 0) t += 1;
+  return t < 1 ? t : 0.0;
 }
 
 // The book's u around the y axis: 0 at -z, 0.25 at +x, 0.5 at +z.
@@ -43,14 +45,13 @@ UvCoord planar_map(const Tuple& p) { return {wrap(p.x, 1.0), wrap(p.z, 1.0)}; }
 UvCoord cylindrical_map(const Tuple& p) { return {u_around_y(p), wrap(p.y, 1.0)}; }
 
 UvCoord toroidal_map(double major, double minor, const Tuple& p) {
+  // The torus's own parameters (torus_angles, shared with partial tori):
+  // exact on the spindle's lemon too, whose points belong to the tube
+  // around the centre circle's far side.
   const double q[3] = {p.x, p.y, p.z};
-  double n[3];
-  torus_normal(major, minor, q, n);
-  // n points from the nearest point of the centre circle to p: its part
-  // along the ring's radius and along the axis give the angle round the tube.
-  const double rho = std::hypot(p.x, p.y);
-  const double radial = rho > 0 ? (n[0] * p.x + n[1] * p.y) / rho : 0.0;
-  return {turns(std::atan2(p.y, p.x)), turns(std::atan2(n[2], radial))};
+  double theta = 0, phi = 0;
+  torus_angles(major, minor, q, &theta, &phi);
+  return {turns(theta), turns(phi)};
 }
 
 CubeFace face_from_point(const Tuple& p) {
