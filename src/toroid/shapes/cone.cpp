@@ -13,7 +13,7 @@ BoundingBox Cone::bounds() const {
   return {point(-limit, minimum, -limit), point(limit, maximum, limit)};
 }
 
-int Cone::local_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
+int Cone::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   int n = 0;
   const Tuple& o = ray.origin;
   const Tuple& d = ray.direction;

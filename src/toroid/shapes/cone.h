@@ -6,7 +6,7 @@
 
 namespace toroid {
 
-class Cone : public Primitive {
+class Cone : public Primitive<Cone> {
  public:
   // Changing these after the cone joins a group: call bounds_changed().
   double minimum = -BoundingBox::kInf;
@@ -14,7 +14,7 @@ class Cone : public Primitive {
   bool closed = false;
 
   BoundingBox bounds() const override;
-  int local_hits(const Ray& ray, Intersection hits[kMaxHits]) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };
 

@@ -4,7 +4,7 @@
 
 namespace toroid {
 
-int Cube::local_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
+int Cube::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   // The cube is its own bounding box: the same slab test, keeping both ends.
   double tmin = -BoundingBox::kInf;
   double tmax = BoundingBox::kInf;

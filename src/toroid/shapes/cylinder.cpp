@@ -7,7 +7,7 @@
 
 namespace toroid {
 
-int Cylinder::local_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
+int Cylinder::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   int n = 0;
   const double a = ray.direction.x * ray.direction.x + ray.direction.z * ray.direction.z;
   // A ray parallel to the y axis can only meet the caps.

@@ -6,7 +6,7 @@
 
 namespace toroid {
 
-class Cylinder : public Primitive {
+class Cylinder : public Primitive<Cylinder> {
  public:
   // Changing these after the cylinder joins a group: call bounds_changed().
   double minimum = -BoundingBox::kInf;
@@ -14,7 +14,7 @@ class Cylinder : public Primitive {
   bool closed = false;
 
   BoundingBox bounds() const override { return {point(-1, minimum, -1), point(1, maximum, 1)}; }
-  int local_hits(const Ray& ray, Intersection hits[kMaxHits]) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };
 

@@ -4,7 +4,7 @@
 
 namespace toroid {
 
-int Plane::local_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
+int Plane::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   // Parallel or coplanar rays miss: a coplanar ray would see only the edge.
   if (std::abs(ray.direction.y) < kEpsilon) return 0;
   hits[0] = {-ray.origin.y / ray.direction.y, this};

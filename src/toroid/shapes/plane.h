@@ -5,13 +5,13 @@
 
 namespace toroid {
 
-class Plane : public Primitive {
+class Plane : public Primitive<Plane> {
  public:
   // Infinite in x and z, flat in y.
   BoundingBox bounds() const override {
     return {point(-BoundingBox::kInf, 0, -BoundingBox::kInf), point(BoundingBox::kInf, 0, BoundingBox::kInf)};
   }
-  int local_hits(const Ray& ray, Intersection hits[kMaxHits]) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };
 

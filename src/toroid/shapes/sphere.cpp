@@ -5,7 +5,7 @@
 
 namespace toroid {
 
-int Sphere::local_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
+int Sphere::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   const Tuple sphere_to_ray = ray.origin - point(0, 0, 0);
   const double a = dot(ray.direction, ray.direction);
   const double b = 2 * dot(ray.direction, sphere_to_ray);

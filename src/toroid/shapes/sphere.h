@@ -7,10 +7,10 @@
 
 namespace toroid {
 
-class Sphere : public Primitive {
+class Sphere : public Primitive<Sphere> {
  public:
   BoundingBox bounds() const override { return {point(-1, -1, -1), point(1, 1, 1)}; }
-  int local_hits(const Ray& ray, Intersection hits[kMaxHits]) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };
 

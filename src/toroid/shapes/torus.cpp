@@ -88,7 +88,7 @@ BoundingBox Torus::bounds() const {
 
 AnnularCylinder Torus::washer() const { return {major_ - minor_, major_ + minor_, minor_}; }
 
-int Torus::local_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
+int Torus::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!washer().may_meet(ray.origin, ray.direction, -kInf, kInf)) return 0;
   const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
@@ -113,7 +113,7 @@ bool Torus::nearest_root(const Ray& ray, double t_max, double& t) const {
 }
 
 bool Torus::local_intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const {
-  if (!keeps_all_) return Primitive::local_intersect_nearest(ray, t_max, hit);
+  if (!keeps_all_) return Primitive<Torus>::local_intersect_nearest(ray, t_max, hit);
   double t;
   if (!nearest_root(ray, t_max, t)) return false;
   hit = {t, this};
@@ -121,7 +121,7 @@ bool Torus::local_intersect_nearest(const Ray& ray, double t_max, Intersection& 
 }
 
 bool Torus::local_blocks(const Ray& ray, double t_max) const {
-  if (!keeps_all_) return Primitive::local_blocks(ray, t_max);
+  if (!keeps_all_) return Primitive<Torus>::local_blocks(ray, t_max);
   double t;
   return nearest_root(ray, t_max, t);
 }

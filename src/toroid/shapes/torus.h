@@ -35,7 +35,7 @@ struct TorusSweep {
   bool whole() const { return theta_max >= kTwoPi && phi_max - phi_min >= kTwoPi; }
 };
 
-class Torus : public Primitive {
+class Torus : public Primitive<Torus> {
  public:
   // Precondition: major > 0, minor > 0, both finite (the scene loader checks).
   Torus(double major = 1.0, double minor = 0.25) : major_(major), minor_(minor) {}
@@ -60,10 +60,10 @@ class Torus : public Primitive {
   // Every kept root (sorted), so CSG and refraction see the ray leave and
   // re-enter the same torus. A partial torus is an open surface: a ray
   // through an open edge meets its inside.
-  int local_hits(const Ray& ray, Intersection hits[kMaxHits]) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
   // The solver's nearest-root query (no list, early exit) when every root is
-  // kept; a partial torus filters local_hits instead.
+  // kept; a partial torus filters find_hits instead.
   bool local_intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const override;
   bool local_blocks(const Ray& ray, double t_max) const override;
 

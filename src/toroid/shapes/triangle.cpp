@@ -27,7 +27,7 @@ BoundingBox Triangle::bounds() const {
   return b;
 }
 
-int Triangle::local_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
+int Triangle::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   const Tuple dir_cross_e2 = cross(ray.direction, e2_);
   const double det = dot(e1_, dir_cross_e2);
   const Tuple& d = ray.direction;

@@ -5,7 +5,7 @@
 
 namespace toroid {
 
-class Triangle : public Primitive {
+class Triangle : public Primitive<Triangle> {
  public:
   Triangle(const Tuple& p1, const Tuple& p2, const Tuple& p3);
 
@@ -18,7 +18,7 @@ class Triangle : public Primitive {
 
   BoundingBox bounds() const override;
   // Records the barycentric u (weight of p2) and v (weight of p3) of the hit.
-  int local_hits(const Ray& ray, Intersection hits[kMaxHits]) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 
  private:
