@@ -10,6 +10,7 @@
 #include "toroid/io/image_writer.h"
 #include "toroid/render/renderer.h"
 #include "toroid/scene/scene_loader.h"
+#include "toroid/io/srgb.h"
 
 namespace toroid {
 namespace {

@@ -1,4 +1,5 @@
 #include "toroid/io/image_reader.h"
+#include "toroid/io/srgb.h"
 
 #include <png.h>
 
@@ -15,25 +16,6 @@
 #include <vector>
 
 namespace toroid {
-
-namespace {
-
-// The sRGB decoding of every 8-bit code, computed once.
-std::array<double, 256> make_srgb_table() {
-  std::array<double, 256> t{};
-  for (int i = 0; i < 256; ++i) {
-    const double s = i / 255.0;
-    t[i] = s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
-  }
-  return t;
-}
-
-}  // namespace
-
-double srgb8_to_linear(unsigned char code) {
-  static const std::array<double, 256> table = make_srgb_table();
-  return table[code];
-}
 
 namespace {
 

@@ -27,10 +27,6 @@ struct ImageReadError : std::runtime_error {
 // The largest width or height accepted (as for rendered images).
 inline constexpr int kMaxImageReadSide = 16384;
 
-// An 8-bit sRGB code value as a linear colour component in [0, 1]; the
-// inverse of linear_to_srgb8: linear_to_srgb8(srgb8_to_linear(c)) == c.
-double srgb8_to_linear(unsigned char code);
-
 // The book's canvas_from_ppm: a P3 or P6 image held in `data`; `source`
 // names it in messages. Comments (# to the end of the line) may appear
 // anywhere in a P3 file and in a P6 header. Throws ImageReadError.

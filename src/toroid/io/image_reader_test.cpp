@@ -10,6 +10,7 @@
 #include "support/approx.h"
 #include "support/temp_dir.h"
 #include "toroid/io/image_writer.h"
+#include "toroid/io/srgb.h"
 
 namespace toroid {
 namespace {

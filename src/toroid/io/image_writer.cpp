@@ -1,4 +1,5 @@
 #include "toroid/io/image_writer.h"
+#include "toroid/io/srgb.h"
 
 #include <png.h>
 #include <sys/stat.h>
@@ -14,13 +15,6 @@
 #include <vector>
 
 namespace toroid {
-
-unsigned char linear_to_srgb8(double c) {
-  if (!(c > 0)) return 0;  // also NaN
-  if (c >= 1) return 255;
-  const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-  return static_cast<unsigned char>(std::lround(s * 255.0));
-}
 
 namespace {
 
@@ -61,6 +55,11 @@ std::string write_png(const Canvas& canvas, FILE* f) {
   png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), 8, PNG_COLOR_TYPE_RGB,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  // zlib's fastest level with the one adaptive filter that suits rendered
+  // images: a few percent larger than the default, several times faster to
+  // write (docs/performance.md).
+  png_set_compression_level(png, 1);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_PAETH);
   png_write_info(png, info);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {

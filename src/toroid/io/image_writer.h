@@ -12,9 +12,6 @@ struct ImageWriteError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Linear [0, 1] (clamped) to an 8-bit sRGB code value.
-unsigned char linear_to_srgb8(double linear);
-
 // Writes by extension: ".png" (8-bit RGB, sRGB-encoded from the canvas's
 // linear colours, with an sRGB chunk) or ".ppm" (canvas_to_ppm, no gamma, as
 // the book specifies). The file is written to a temporary name in the same

@@ -1,4 +1,5 @@
 #include "toroid/io/image_writer.h"
+#include "toroid/io/srgb.h"
 
 #include <gtest/gtest.h>
 #include <png.h>

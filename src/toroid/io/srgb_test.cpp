@@ -1,0 +1,46 @@
+#include "toroid/io/srgb.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace toroid {
+namespace {
+
+// The sRGB formula written out, rounded to nearest: the table must agree
+// with it everywhere, boundaries included.
+int formula(double c) {
+  if (!(c > 0)) return 0;
+  if (c >= 1) return 255;
+  const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+  return static_cast<int>(std::lround(s * 255.0));
+}
+
+TEST(Srgb, EncodingAgreesWithTheFormulaEverywhere) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-0.1, 1.1);
+  for (int i = 0; i < 200000; ++i) {
+    const double c = u(rng);
+    ASSERT_EQ(linear_to_srgb8(c), formula(c)) << c;
+  }
+  // Next to every code boundary, on both sides.
+  for (int k = 0; k < 256; ++k) {
+    const double s = (k + 0.5) / 255.0;
+    const double edge = s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
+    double c = edge;
+    for (int step = 0; step < 4; ++step) c = std::nextafter(c, 0.0);
+    for (int step = 0; step < 8; ++step, c = std::nextafter(c, 2.0)) ASSERT_EQ(linear_to_srgb8(c), formula(c)) << c;
+  }
+}
+
+TEST(Srgb, EncodingClampsAndRejectsNaN) {
+  EXPECT_EQ(linear_to_srgb8(-1.0), 0);
+  EXPECT_EQ(linear_to_srgb8(0.0), 0);
+  EXPECT_EQ(linear_to_srgb8(std::nan("")), 0);
+  EXPECT_EQ(linear_to_srgb8(1.0), 255);
+  EXPECT_EQ(linear_to_srgb8(INFINITY), 255);
+}
+
+}  // namespace
+}  // namespace toroid
