@@ -42,11 +42,8 @@ double max_abs(const Tuple& v) { return std::max({std::abs(v.x), std::abs(v.y), 
 // norm of its linear part (exact for a rotation times a uniform scale, up
 // to the factor sqrt(3)). 0 when no side is finite and non-zero (a plane).
 double world_half_thickness(const Shape& shape) {
-  const BoundingBox box = shape.bounds();
-  double half = std::numeric_limits<double>::infinity();
-  for (const double side : {box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z})
-    if (side > 0 && std::isfinite(side)) half = std::min(half, side / 2);
-  if (!std::isfinite(half)) return 0;
+  const double half = shape.half_thickness();
+  if (half == 0) return 0;
   Matrix4 world_to_object = shape.inverse_transform();
   for (const Shape* s = shape.parent; s != nullptr; s = s->parent)
     world_to_object = world_to_object * s->inverse_transform();

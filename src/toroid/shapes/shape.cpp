@@ -1,5 +1,9 @@
 #include "toroid/shapes/shape.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace toroid {
 
 void Shape::set_transform(const Matrix4& m) {
@@ -22,6 +26,14 @@ Tuple Shape::normal_at(const Tuple& world_point, const Intersection& hit) const 
 }
 
 BoundingBox Shape::parent_space_bounds() const { return ::toroid::transform(bounds(), transform()); }
+
+double Shape::half_thickness() const {
+  const BoundingBox box = bounds();
+  double half = std::numeric_limits<double>::infinity();
+  for (const double side : {box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z})
+    if (side > 0 && std::isfinite(side)) half = std::min(half, side / 2);
+  return std::isfinite(half) ? half : 0.0;
+}
 
 namespace {
 // local_intersect's list for the default queries. One per thread; the

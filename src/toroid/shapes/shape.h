@@ -67,6 +67,10 @@ class Shape {
   virtual BoundingBox bounds() const = 0;
   // Box in the parent's space (object bounds through this shape's transform).
   BoundingBox parent_space_bounds() const;
+  // Half the thinnest finite, non-zero side of bounds() (0 when there is
+  // none, as for a plane): the scale of the shape, for the surface bias.
+  // Shapes that know it without building their box override it.
+  virtual double half_thickness() const;
 
   // CSG: whether `other` is this shape or one of its descendants.
   virtual bool includes(const Shape* other) const { return other == this; }

@@ -86,6 +86,8 @@ BoundingBox Torus::bounds() const {
   return {point(x_lo, y_lo, minor_ * phi.sin_min), point(x_hi, y_hi, minor_ * phi.sin_max)};
 }
 
+double Torus::half_thickness() const { return partial_ ? Shape::half_thickness() : minor_; }
+
 AnnularCylinder Torus::washer() const { return {major_ - minor_, major_ + minor_, minor_}; }
 
 int Torus::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {

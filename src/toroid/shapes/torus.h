@@ -57,6 +57,9 @@ class Torus : public Primitive<Torus> {
 
   // The box of the kept part (exact for the swept angles' ranges).
   BoundingBox bounds() const override;
+  // The tube radius for a whole torus (its box is 2r thick), without the
+  // box's trigonometry: it is asked at every hit.
+  double half_thickness() const override;
   // Every kept root (sorted), so CSG and refraction see the ray leave and
   // re-enter the same torus. A partial torus is an open surface: a ray
   // through an open edge meets its inside.

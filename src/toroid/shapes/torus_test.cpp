@@ -447,3 +447,21 @@ TEST(Torus, SpindleAndHornToriHaveNoCrackAtTheAxis) {
 
 }  // namespace
 }  // namespace toroid
+
+namespace toroid {
+namespace {
+
+// The surface bias scales with half_thickness(): a whole torus answers r
+// without building its box, and that is what its box says too.
+TEST(Torus, HalfThicknessIsTheTubeRadiusAsTheBoxSays) {
+  for (const auto& [R, r] : {std::pair{1.0, 0.25}, {1.0, 1e-3}, {1.0, 1.5}, {1e4, 1.0}}) {
+    const Torus t(R, r);
+    const BoundingBox box = t.bounds();
+    const double thinnest_half = std::min({box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z}) / 2;
+    EXPECT_EQ(t.half_thickness(), r);
+    EXPECT_DOUBLE_EQ(t.half_thickness(), thinnest_half);
+  }
+}
+
+}  // namespace
+}  // namespace toroid
