@@ -1,5 +1,7 @@
 #include "toroid/shapes/shape_bvh.h"
 
+#include <atomic>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -97,6 +99,8 @@ bool has_transparent(const Shape& s) {
 }  // namespace
 
 ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shapes.size()) {
+  static std::atomic<std::uint64_t> next_serial{1};
+  serial_ = next_serial++;
   std::vector<Item> items;
   items.reserve(shapes.size());
   for (const auto& s : shapes) {
@@ -212,8 +216,12 @@ bool ShapeBvh::intersect_nearest(const Ray& ray, double t_max, Intersection& hit
   return found;
 }
 
-bool ShapeBvh::blocks(const Ray& ray, double t_max) const {
-  auto blocked_by = [&](const Shape* s) { return s->blocks(ray, t_max); };
+bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const {
+  auto blocked_by = [&](const Shape* s) {
+    if (!s->blocks(ray, t_max)) return false;
+    if (blocker) *blocker = s;
+    return true;
+  };
   for (const Shape* s : unbounded_)
     if (blocked_by(s)) return true;
   return walk(ray, 0, t_max, blocked_by);

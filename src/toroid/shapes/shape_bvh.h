@@ -29,11 +29,15 @@ class ShapeBvh {
 
   // How many shapes it indexes (bounded and unbounded).
   std::size_t size() const { return size_; }
+  // Different for every index built (0 for an empty one): lets per-thread
+  // caches of shape pointers tell that the index they came from is gone.
+  std::uint64_t serial() const { return serial_; }
 
   // Shape::intersect_nearest over every indexed shape.
   bool intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const;
-  // Shape::blocks over every indexed shape.
-  bool blocks(const Ray& ray, double t_max) const;
+  // Shape::blocks over every indexed shape; sets *blocker (when given) to
+  // the indexed shape that blocks.
+  bool blocks(const Ray& ray, double t_max, const Shape** blocker = nullptr) const;
 
   // Whether some indexed shape, or a shape below one, is transparent (has
   // refraction): then shading needs intersect_up_to_hit.
@@ -66,6 +70,7 @@ class ShapeBvh {
   std::vector<const Shape*> shapes_;     // bounded shapes, in leaf order
   std::vector<const Shape*> unbounded_;  // tested by every query
   std::size_t size_ = 0;
+  std::uint64_t serial_ = 0;
   bool any_transparent_ = false;
 };
 
