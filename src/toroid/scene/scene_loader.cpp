@@ -1,5 +1,6 @@
 #include "toroid/scene/scene_loader.h"
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "toroid/math/transform.h"
+#include "toroid/render/image_limits.h"
 #include "toroid/render/pattern.h"
 #include "toroid/scene/obj_file.h"
 #include "toroid/shapes/cone.h"
@@ -46,8 +48,15 @@ int edit_distance(const std::string& a, const std::string& b) {
 
 namespace {
 
-constexpr int kMaxImageSide = 16384;
 constexpr std::size_t kGroupBvhThreshold = 8;
+
+// Limits that keep a mistaken (or hostile) scene from exhausting the stack,
+// memory or time; docs/errors.md lists them. Defines and YAML aliases can
+// repeat a group or a pattern inside itself, which multiplies the work.
+constexpr int kMaxNesting = 64;  // groups and CSG inside each other; defines extending defines
+constexpr std::size_t kMaxShapes = 100'000;  // shapes made from YAML (meshes belong in OBJ files: not counted)
+constexpr std::size_t kMaxPatterns = 100'000;
+constexpr std::size_t kMaxTransformOperations = 10'000'000;
 
 // " (did you mean 'x'?)" for the nearest candidate, if near enough.
 std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
@@ -111,11 +120,11 @@ class Loader {
   std::vector<Entry> entries(const YAML::Node& map, const std::string& what) const {
     if (!map.IsMap()) fail(map, what + " must be a map, got " + describe(map));
     std::vector<Entry> out;
+    std::set<std::string> seen;
     for (auto it = map.begin(); it != map.end(); ++it) {
       if (!it->first.IsScalar()) fail(it->first, "keys must be plain names");
       const std::string key = it->first.Scalar();
-      for (const auto& e : out)
-        if (e.key == key) fail(it->first, "duplicate key '" + key + "'");
+      if (!seen.insert(key).second) fail(it->first, "duplicate key '" + key + "'");
       out.push_back({key, it->first, it->second});
     }
     return out;
@@ -143,7 +152,14 @@ class Loader {
   double number(const YAML::Node& n) const {
     if (!n.IsScalar()) fail(n, "expected a number, got " + describe(n));
     double v = 0;
-    if (!YAML::convert<double>::decode(n, v)) fail(n, "expected a number, got '" + n.Scalar() + "'");
+    if (!YAML::convert<double>::decode(n, v)) {
+      const char* text = n.Scalar().c_str();
+      char* end = nullptr;
+      errno = 0;
+      std::strtod(text, &end);
+      if (errno == ERANGE && end != text && *end == '\0') fail(n, "number out of range: '" + n.Scalar() + "'");
+      fail(n, "expected a number, got '" + n.Scalar() + "'");
+    }
     if (!std::isfinite(v)) fail(n, "expected a finite number, got '" + n.Scalar() + "'");
     return v;
   }
@@ -189,6 +205,17 @@ class Loader {
     return vector(v[0], v[1], v[2]);
   }
 
+  // Counts one more of something limited; fails at `where` past the limit.
+  void count(std::size_t& counter, std::size_t limit, const YAML::Node& where, const std::string& what) const {
+    if (++counter > limit)
+      fail(where, "the scene makes more than " + std::to_string(limit) + " " + what +
+                      " (do defines or YAML aliases repeat a group inside itself?)");
+  }
+  void check_nesting(std::size_t depth, const YAML::Node& where, const std::string& what) const {
+    if (depth > static_cast<std::size_t>(kMaxNesting))
+      fail(where, what + " nested more than " + std::to_string(kMaxNesting) + " deep");
+  }
+
   const Define& lookup_define(const YAML::Node& name_node, const std::string& what) const {
     const std::string n = name(name_node, what);
     auto it = defines_.find(n);
@@ -206,11 +233,21 @@ class Loader {
     if (!std::isfinite(det) || det == 0.0) fail(where, "singular transform (determinant 0): it cannot be inverted");
   }
 
+  static const std::vector<std::string>& transform_kinds() {
+    static const std::vector<std::string> k{"translate", "scale", "rotate-x", "rotate-y", "rotate-z", "shear"};
+    return k;
+  }
+  static bool is_transform_kind(const std::string& k) {
+    return std::find(transform_kinds().begin(), transform_kinds().end(), k) != transform_kinds().end();
+  }
+
   // Composes a transform list onto `m` (first listed applies first).
   void apply_transform_list(const YAML::Node& list, Matrix4& m, std::set<std::string>& visiting) const {
     if (!list.IsSequence()) fail(list, "transform must be a list, got " + describe(list));
     for (const YAML::Node& op : list) {
       if (op.IsScalar()) {
+        if (is_transform_kind(op.Scalar()) && !defines_.count(op.Scalar()))
+          fail(list, "each transform operation is a list of its own: [[" + op.Scalar() + ", ...], ...]");
         apply_transform_define(op, m, visiting);
         continue;
       }
@@ -225,6 +262,7 @@ class Loader {
         for (std::size_t i = 1; i <= n; ++i) v.push_back(number(op[i]));
         return v;
       };
+      count(transform_operations_, kMaxTransformOperations, op, "transform operations");
       Matrix4 t;
       if (kind == "translate") {
         const auto v = args(3);
@@ -242,8 +280,7 @@ class Loader {
         const auto v = args(6);
         t = shearing(v[0], v[1], v[2], v[3], v[4], v[5]);
       } else {
-        fail(op[0], "unknown transform '" + kind + "'" +
-                        suggestion(kind, {"translate", "scale", "rotate-x", "rotate-y", "rotate-z", "shear"}));
+        fail(op[0], "unknown transform '" + kind + "'" + suggestion(kind, transform_kinds()));
       }
       m = t * m;
     }
@@ -253,6 +290,7 @@ class Loader {
     const Define& d = lookup_define(name_node, "transform");
     const std::string n = name_node.Scalar();
     if (!visiting.insert(n).second) fail(name_node, "circular define: '" + n + "' refers to itself");
+    check_nesting(visiting.size(), name_node, "transform defines");
     if (!d.value.IsSequence()) fail(name_node, "'" + n + "' is not a transform (its value is not a list)");
     if (d.extend) apply_transform_define(*d.extend, m, visiting);
     apply_transform_list(d.value, m, visiting);
@@ -293,7 +331,9 @@ class Loader {
     }
   }
 
-  std::shared_ptr<Pattern> pattern(const YAML::Node& node) const {
+  std::shared_ptr<Pattern> pattern(const YAML::Node& node, std::size_t depth = 1) const {
+    check_nesting(depth, node, "blended patterns");
+    count(patterns_made_, kMaxPatterns, node, "patterns");
     const auto es = entries(node, "a pattern");
     const Entry& type = require(es, "type", node, "a pattern");
     const std::string kind = name(type.value, "pattern type");
@@ -303,7 +343,7 @@ class Loader {
       check_keys(es, {"type", "patterns", "transform"}, "a blended pattern");
       const Entry& ps = require(es, "patterns", node, "a blended pattern");
       if (!ps.value.IsSequence() || ps.value.size() != 2) fail(ps.value, "'patterns' must be a list of 2 patterns");
-      p = std::make_shared<BlendedPattern>(pattern(ps.value[0]), pattern(ps.value[1]));
+      p = std::make_shared<BlendedPattern>(pattern(ps.value[0], depth + 1), pattern(ps.value[1], depth + 1));
     } else {
       const std::vector<std::string> kinds{"stripes", "gradient", "rings", "checkers", "blended"};
       if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
@@ -337,7 +377,7 @@ class Loader {
       else if (e.key == "shininess") m.shininess = number(e.value);
       else if (e.key == "reflective") m.reflective = number(e.value);
       else if (e.key == "transparency") m.transparency = number(e.value);
-      else if (e.key == "refractive-index") m.refractive_index = number(e.value);
+      else if (e.key == "refractive-index") m.refractive_index = positive(e.value, "refractive-index");
       else if (e.key == "pattern") m.pattern = pattern(e.value);
       else if (e.key == "shadow") casts_shadow = boolean(e.value);
     }
@@ -348,6 +388,7 @@ class Loader {
     const Define& d = lookup_define(name_node, "material");
     const std::string n = name_node.Scalar();
     if (!visiting.insert(n).second) fail(name_node, "circular define: '" + n + "' refers to itself");
+    check_nesting(visiting.size(), name_node, "material defines");
     if (!d.value.IsMap() || d.value["add"]) fail(name_node, "'" + n + "' is not a material");
     if (d.extend) apply_material_define(*d.extend, m, casts_shadow, visiting);
     apply_material_map(d.value, m, casts_shadow);
@@ -375,7 +416,9 @@ class Loader {
   }
 
   // The shape's kind and its keys, following `add: NAME` through shape
-  // defines (the item's keys override the define's).
+  // defines (the item's keys override the define's). The defines followed
+  // are added to `visiting`: the caller keeps them there while it builds the
+  // shape's children, so that a define inside itself is caught.
   void collect_shape(const YAML::Node& item, std::string& kind, YAML::Node& kind_node, std::vector<Entry>& out,
                      std::set<std::string>& visiting, bool operand) const {
     auto es = entries(item, "a shape");
@@ -401,8 +444,8 @@ class Loader {
       fail(knode, "unknown shape '" + n + "'" + suggestion(n, names));
     }
     if (!visiting.insert(n).second) fail(knode, "circular define: shape '" + n + "' contains itself");
+    check_nesting(visiting.size(), knode, "shape defines");
     collect_shape(it->second.value, kind, kind_node, out, visiting, false);
-    visiting.erase(n);
     for (const Entry& e : own) {
       auto same = std::find_if(out.begin(), out.end(), [&](const Entry& o) { return o.key == e.key; });
       if (same != out.end()) *same = e;
@@ -424,11 +467,15 @@ class Loader {
     const Material* material = nullptr;
   };
 
+  // `depth`: 1 for a scene item, one more inside each group or CSG.
   std::shared_ptr<Shape> shape(const YAML::Node& item, const Inherited& inh, std::set<std::string>& visiting,
-                               bool operand = false) const {
+                               std::size_t depth, bool operand = false) const {
+    check_nesting(depth, item, "groups and CSG");
+    count(shapes_made_, kMaxShapes, item, "shapes");
     std::string kind;
     YAML::Node kind_node;
     std::vector<Entry> es;
+    const std::set<std::string> outer_defines = visiting;
     collect_shape(item, kind, kind_node, es, visiting, operand);
     std::vector<std::string> allowed{"transform", "material", "shadow"};
     if (kind == "cylinder" || kind == "cone") allowed.insert(allowed.end(), {"min", "max", "closed"});
@@ -493,7 +540,7 @@ class Loader {
       auto g = std::make_shared<Group>();
       if (const Entry* c = find(es, "children")) {
         if (!c->value.IsSequence()) fail(c->value, "'children' must be a list of shapes, got " + describe(c->value));
-        for (const YAML::Node& child : c->value) g->add_child(shape(child, child_inh, visiting));
+        for (const YAML::Node& child : c->value) g->add_child(shape(child, child_inh, visiting, depth + 1));
       }
       s = g;
     } else if (kind == "csg") {
@@ -510,14 +557,16 @@ class Loader {
       const Entry* r = find(es, "right");
       if (!l || !r) fail(kind_node, std::string("a csg needs both 'left' and 'right' operands (missing '") +
                                         (!l ? "left" : "right") + "')");
-      auto left = shape(l->value, child_inh, visiting, true);
-      auto right = shape(r->value, child_inh, visiting, true);
+      auto left = shape(l->value, child_inh, visiting, depth + 1, true);
+      auto right = shape(r->value, child_inh, visiting, depth + 1, true);
       s = std::make_shared<Csg>(cop, std::move(left), std::move(right));
     } else if (kind == "obj") {
       const Entry& f = require(es, "file", kind_node, "an obj");
       const std::string file = name(f.value, "file");
-      const std::filesystem::path p = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base_dir_ / file;
-      if (!std::filesystem::exists(p)) fail(f.value, "OBJ file '" + file + "' not found (looked for '" + p.string() + "')");
+      const std::filesystem::path p =
+          (std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base_dir_ / file).lexically_normal();
+      if (!std::filesystem::exists(p))
+        fail(f.value, "OBJ file '" + file + "' not found" + (p.string() == file ? "" : " (looked for '" + p.string() + "')"));
       try {
         s = load_obj(p);
       } catch (const std::exception& e) {
@@ -530,6 +579,7 @@ class Loader {
     // name none; their `shadow` applies to the whole subtree.
     if (kind == "obj" && has_material) apply_material_recursive(*s, material);
     if (has_shadow) set_shadow_recursive(*s, casts_shadow);
+    visiting = outer_defines;
     return s;
   }
 
@@ -543,6 +593,7 @@ class Loader {
   std::filesystem::path base_dir_;
   SceneLoadOptions options_;
   std::map<std::string, Define> defines_;
+  mutable std::size_t shapes_made_ = 0, patterns_made_ = 0, transform_operations_ = 0;
 };
 
 Scene Loader::load(const YAML::Node& root) {
@@ -580,8 +631,8 @@ Scene Loader::load(const YAML::Node& root) {
       const Entry& h = require(es, "height", item, "a camera");
       c.width = integer(w.value);
       c.height = integer(h.value);
-      if (c.width <= 0 || c.width > kMaxImageSide) fail(w.value, "camera width must be in 1..16384, got " + w.value.Scalar());
-      if (c.height <= 0 || c.height > kMaxImageSide) fail(h.value, "camera height must be in 1..16384, got " + h.value.Scalar());
+      if (const std::string e = image_size_error(c.width, c.height); !e.empty())
+        fail(c.width < 1 || c.width > kMaxImageSide ? w.value : h.value, "camera " + e);
       const Entry& f = require(es, "field-of-view", item, "a camera");
       c.fov = number(f.value);
       if (!(c.fov > 0 && c.fov < std::numbers::pi)) fail(f.value, "field-of-view must be between 0 and pi radians, got " + f.value.Scalar());
@@ -623,7 +674,7 @@ Scene Loader::load(const YAML::Node& root) {
       }
     } else {
       std::set<std::string> visiting;
-      auto s = shape(item, Inherited{}, visiting);
+      auto s = shape(item, Inherited{}, visiting, 1);
       if (dynamic_cast<Group*>(s.get()) || dynamic_cast<Csg*>(s.get())) s->divide(kGroupBvhThreshold);
       world.objects.push_back(std::move(s));
     }
@@ -639,7 +690,9 @@ std::string format_yaml_error(const std::string& source, const YAML::Exception& 
   os << source << ':';
   if (e.mark.line >= 0) os << e.mark.line + 1 << ':' << e.mark.column + 1 << ": ";
   else os << ' ';
-  os << "YAML syntax error: " << e.msg;
+  // yaml-cpp's depth guard says "bad file"; say what it means.
+  if (dynamic_cast<const YAML::DeepRecursion*>(&e)) os << "YAML syntax error: lists or maps nested too deeply";
+  else os << "YAML syntax error: " << e.msg;
   return os.str();
 }
 
@@ -661,6 +714,9 @@ Scene load_scene_from_string(const std::string& text, const std::string& source,
 }
 
 Scene load_scene(const std::string& path, const SceneLoadOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw SceneError("cannot read scene '" + path + "': not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError("cannot read scene '" + path + "': " + std::strerror(errno));
   std::ostringstream ss;
