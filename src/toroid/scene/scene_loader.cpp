@@ -56,7 +56,6 @@ constexpr std::size_t kGroupBvhThreshold = 8;
 constexpr int kMaxNesting = 64;  // groups and CSG inside each other; defines extending defines
 constexpr std::size_t kMaxShapes = 100'000;  // shapes made from YAML (meshes belong in OBJ files: not counted)
 constexpr std::size_t kMaxPatterns = 100'000;
-constexpr std::size_t kMaxTransformOperations = 10'000'000;
 
 // " (did you mean 'x'?)" for the nearest candidate, if near enough.
 std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
@@ -209,7 +208,7 @@ class Loader {
   void count(std::size_t& counter, std::size_t limit, const YAML::Node& where, const std::string& what) const {
     if (++counter > limit)
       fail(where, "the scene makes more than " + std::to_string(limit) + " " + what +
-                      " (do defines or YAML aliases repeat a group inside itself?)");
+                      " (defines or YAML aliases that repeat one another multiply them)");
   }
   void check_nesting(std::size_t depth, const YAML::Node& where, const std::string& what) const {
     if (depth > static_cast<std::size_t>(kMaxNesting))
@@ -262,7 +261,6 @@ class Loader {
         for (std::size_t i = 1; i <= n; ++i) v.push_back(number(op[i]));
         return v;
       };
-      count(transform_operations_, kMaxTransformOperations, op, "transform operations");
       Matrix4 t;
       if (kind == "translate") {
         const auto v = args(3);
@@ -286,15 +284,23 @@ class Loader {
     }
   }
 
+  // Each transform define is composed once and remembered: defines that
+  // list another twice would otherwise double the work at every level.
   void apply_transform_define(const YAML::Node& name_node, Matrix4& m, std::set<std::string>& visiting) const {
     const Define& d = lookup_define(name_node, "transform");
     const std::string n = name_node.Scalar();
-    if (!visiting.insert(n).second) fail(name_node, "circular define: '" + n + "' refers to itself");
-    check_nesting(visiting.size(), name_node, "transform defines");
-    if (!d.value.IsSequence()) fail(name_node, "'" + n + "' is not a transform (its value is not a list)");
-    if (d.extend) apply_transform_define(*d.extend, m, visiting);
-    apply_transform_list(d.value, m, visiting);
-    visiting.erase(n);
+    auto known = transform_defines_.find(n);
+    if (known == transform_defines_.end()) {
+      if (!visiting.insert(n).second) fail(name_node, "circular define: '" + n + "' refers to itself");
+      check_nesting(visiting.size(), name_node, "transform defines");
+      if (!d.value.IsSequence()) fail(name_node, "'" + n + "' is not a transform (its value is not a list)");
+      Matrix4 composed = Matrix4::identity();
+      if (d.extend) apply_transform_define(*d.extend, composed, visiting);
+      apply_transform_list(d.value, composed, visiting);
+      visiting.erase(n);
+      known = transform_defines_.emplace(n, composed).first;
+    }
+    m = known->second * m;
   }
 
   Matrix4 transform_of(const YAML::Node& list) const {
@@ -593,7 +599,9 @@ class Loader {
   std::filesystem::path base_dir_;
   SceneLoadOptions options_;
   std::map<std::string, Define> defines_;
-  mutable std::size_t shapes_made_ = 0, patterns_made_ = 0, transform_operations_ = 0;
+  mutable std::size_t shapes_made_ = 0, patterns_made_ = 0;
+  // Composed transform defines by name (cleared whenever a define is added).
+  mutable std::map<std::string, Matrix4> transform_defines_;
 };
 
 Scene Loader::load(const YAML::Node& root) {
@@ -615,6 +623,7 @@ Scene Loader::load(const YAML::Node& root) {
         def.extend = e->value;
       }
       defines_[n] = def;
+      transform_defines_.clear();
       continue;
     }
     const Entry* add = find(es, "add");
