@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Runs every case of the bad-input corpus (tests/bad-input/) the way
 # tests/bad_input_test.cpp does and prints, per case, the exit status and the
-# message as Markdown (docs/errors.md's examples come from here).
-# Usage: tools/bad-input-messages.sh [BUILD_DIR]   (default: build)
+# message: tab-separated, or with --markdown one table per kind (the examples
+# in docs/errors.md come from here).
+# Usage: tools/bad-input-messages.sh [BUILD_DIR] [--all | --markdown]
+#   BUILD_DIR defaults to build; --all also runs cases without an .expected.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 toroid="$(cd "${1:-$root/build}" && pwd)/toroid"
@@ -28,14 +30,23 @@ run_case() {  # kind file
   esac
 }
 
+mode=${2:-}
 for kind in scene obj intersect cli; do
   case $kind in scene) ext=yml ;; obj) ext=obj ;; intersect) ext=txt ;; cli) ext=args ;; esac
+  if [ "$mode" = --markdown ]; then
+    printf '\n| case (`tests/bad-input/%s/`) | exit | message |\n|---|---|---|\n' "$kind"
+  fi
   for f in "$corpus/$kind"/*.$ext; do
-    [ -e "$f.expected" ] || [ "${2:-}" = --all ] || continue
+    [ -e "$f.expected" ] || [ "$mode" = --all ] || continue
     set +e
     msg=$(run_case "$kind" "$f")
     status=$?
     set -e
-    printf '%s\t%s\t%s\n' "$kind/$(basename "$f")" "$status" "$(printf '%s' "$msg" | head -n 1)"
+    msg=$(printf '%s' "$msg" | head -n 1)
+    if [ "$mode" = --markdown ]; then
+      printf '| `%s` | %s | `%s` |\n' "$(basename "$f")" "$status" "${msg//|/\\|}"
+    else
+      printf '%s\t%s\t%s\n' "$kind/$(basename "$f")" "$status" "$msg"
+    fi
   done
 done
