@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -33,6 +34,28 @@ void refractive_indices(const Intersection& hit, std::span<const Intersection> x
   }
 }
 
+double max_abs(const Tuple& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+// Half the thinnest finite, non-zero side of the shape's object-space box, in
+// world units: a lower bound, since a length shrinks at most by the largest
+// stretch of the world-to-object matrix, and that is at most the Frobenius
+// norm of its linear part (exact for a rotation times a uniform scale, up
+// to the factor sqrt(3)). 0 when no side is finite and non-zero (a plane).
+double world_half_thickness(const Shape& shape) {
+  const BoundingBox box = shape.bounds();
+  double half = std::numeric_limits<double>::infinity();
+  for (const double side : {box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z})
+    if (side > 0 && std::isfinite(side)) half = std::min(half, side / 2);
+  if (!std::isfinite(half)) return 0;
+  Matrix4 world_to_object = shape.inverse_transform();
+  for (const Shape* s = shape.parent; s != nullptr; s = s->parent)
+    world_to_object = world_to_object * s->inverse_transform();
+  double norm2 = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) norm2 += world_to_object(i, j) * world_to_object(i, j);
+  return half / std::sqrt(norm2);
+}
+
 Computations prepare(const Intersection& hit, const Ray& ray, std::span<const Intersection> xs) {
   Computations comps;
   comps.t = hit.t;
@@ -45,13 +68,19 @@ Computations prepare(const Intersection& hit, const Ray& ray, std::span<const In
     comps.normalv = -comps.normalv;
   }
   comps.reflectv = reflect(ray.direction, comps.normalv);
-  comps.over_point = comps.point + comps.normalv * kShadowBias;
-  comps.under_point = comps.point - comps.normalv * kShadowBias;
+  const double bias = surface_bias(hit, ray);
+  comps.over_point = comps.point + comps.normalv * bias;
+  comps.under_point = comps.point - comps.normalv * bias;
   refractive_indices(hit, xs, comps);
   return comps;
 }
 
 }  // namespace
+
+double surface_bias(const Intersection& hit, const Ray& ray) {
+  const double magnitude = max_abs(ray.origin) + std::abs(hit.t) * max_abs(ray.direction);
+  return std::max(kBiasPerThickness * world_half_thickness(*hit.object), kBiasPerMagnitude * magnitude);
+}
 
 Computations prepare_computations(const Intersection& hit, const Ray& ray, const Intersections& xs) {
   return prepare(hit, ray, xs);

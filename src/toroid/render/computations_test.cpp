@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "support/approx.h"
 #include "toroid/math/transform.h"
+#include "toroid/shapes/group.h"
 #include "toroid/shapes/plane.h"
 #include "toroid/shapes/sphere.h"
+#include "toroid/shapes/torus.h"
 
 namespace toroid {
 namespace {
@@ -125,6 +128,61 @@ TEST(Intersections, TheSchlickApproximationWithSmallAngleAndN2GreaterThanN1) {
   const Intersections xs{{1.8589, shape.get()}};
   const Computations comps = prepare_computations(xs[0], r, xs);
   EXPECT_APPROX(schlick(comps), 0.48873);
+}
+
+// --- surface_bias: scale-aware over_point / under_point offsets ------------
+
+// The offset of a hit straight down onto the top of `shape` from 5 of its
+// own sizes above (the top is at `top`, the size is `size`).
+double bias_from_above(const Shape& shape, double top, double size) {
+  const Ray r{point(0, top + 5 * size, 0), vector(0, -1, 0)};
+  return surface_bias({5 * size, &shape}, r);
+}
+
+TEST(SurfaceBias, ScalesWithTheObject) {
+  Sphere unit;
+  const double b1 = bias_from_above(unit, 1, 1);
+  EXPECT_GT(b1, kEpsilon / 2);  // the book's over_point.z < -EPSILON/2
+  EXPECT_LT(b1, 1e-4);
+  for (const double s : {1e-9, 1e-3, 1e4, 1e9}) {
+    Sphere scaled;
+    scaled.set_transform(scaling(s, s, s));
+    EXPECT_NEAR(bias_from_above(scaled, s, s) / s, b1, 1e-9 * b1) << "scale " << s;
+  }
+}
+
+TEST(SurfaceBias, FollowsTheTransformsOfEveryParentGroup) {
+  Sphere alone;
+  const double b1 = bias_from_above(alone, 1, 1);
+  auto outer = std::make_shared<Group>();
+  auto inner = std::make_shared<Group>();
+  auto sphere = std::make_shared<Sphere>();
+  outer->set_transform(scaling(1e-3, 1e-3, 1e-3));
+  inner->set_transform(scaling(0.5, 0.5, 0.5));
+  inner->add_child(sphere);
+  outer->add_child(inner);
+  EXPECT_NEAR(bias_from_above(*sphere, 5e-4, 5e-4), 5e-4 * b1, 1e-9 * b1);
+}
+
+TEST(SurfaceBias, FollowsTheThinnestSideNotTheLargest) {
+  // A torus's tube, a wall made of a flattened sphere.
+  const Torus thin(1, 1e-6);
+  EXPECT_LT(bias_from_above(thin, 1e-6, 1), 1e-6 * 1e-4);
+  Sphere wall;
+  wall.set_transform(scaling(10, 0.01, 10));
+  EXPECT_LT(bias_from_above(wall, 0.01, 1), 0.01 * 1e-4);
+}
+
+TEST(SurfaceBias, ExceedsTheRoundingOfFarCoordinates) {
+  // A plane has no thickness: only the hit point's magnitude counts. At
+  // 1e12 neighbouring doubles are 1.2e-4 apart.
+  Plane far_plane;
+  far_plane.set_transform(translation(0, 1e12, 0));
+  const double b = bias_from_above(far_plane, 1e12, 1);
+  EXPECT_GE(b, 8 * (std::nextafter(1e12, 2e12) - 1e12));
+  EXPECT_LT(b, 0.01);
+  // ... and near the origin it is far below anything visible.
+  EXPECT_LT(bias_from_above(Plane(), 0, 1), 1e-12);
 }
 
 }  // namespace

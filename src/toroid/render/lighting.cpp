@@ -1,29 +1,55 @@
 #include "toroid/render/lighting.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include "toroid/render/pattern.h"
 
 namespace toroid {
 
-Color lighting(const Material& m, const Shape& object, const PointLight& light, const Tuple& point,
-               const Tuple& eyev, const Tuple& normalv, double light_intensity) {
+namespace {
+
+Color effective_color(const Material& m, const Shape& object, const Tuple& point, const Color& intensity) {
   const Color surface = m.pattern ? m.pattern->pattern_at_shape(object, point) : m.color;
-  const Color effective_color = surface * light.intensity;
-  const Color ambient = effective_color * m.ambient;
-  if (light_intensity <= 0) return ambient;
+  return surface * intensity;
+}
 
-  const Tuple lightv = normalize(light.position - point);
+// Diffuse plus specular light from a light of `intensity` at `position`.
+Color diffuse_specular(const Material& m, const Color& effective, const Color& intensity, const Tuple& position,
+                       const Tuple& point, const Tuple& eyev, const Tuple& normalv) {
+  const Tuple lightv = normalize(position - point);
   const double light_dot_normal = dot(lightv, normalv);
-  // Light on the other side of the surface: only ambient.
-  if (light_dot_normal < 0) return ambient;
-
-  const Color diffuse = effective_color * m.diffuse * light_dot_normal;
-  Color specular = kBlack;
+  // Light on the other side of the surface: none.
+  if (light_dot_normal < 0) return kBlack;
+  const Color diffuse = effective * m.diffuse * light_dot_normal;
   const Tuple reflectv = reflect(-lightv, normalv);
   const double reflect_dot_eye = dot(reflectv, eyev);
-  if (reflect_dot_eye > 0) specular = light.intensity * (m.specular * std::pow(reflect_dot_eye, m.shininess));
-  return ambient + (diffuse + specular) * light_intensity;
+  if (reflect_dot_eye <= 0) return diffuse;
+  return diffuse + intensity * (m.specular * std::pow(reflect_dot_eye, m.shininess));
+}
+
+}  // namespace
+
+Color lighting(const Material& m, const Shape& object, const PointLight& light, const Tuple& point,
+               const Tuple& eyev, const Tuple& normalv, double light_intensity) {
+  const Color effective = effective_color(m, object, point, light.intensity);
+  const Color ambient = effective * m.ambient;
+  if (light_intensity <= 0) return ambient;
+  return ambient +
+         diffuse_specular(m, effective, light.intensity, light.position, point, eyev, normalv) * light_intensity;
+}
+
+Color lighting(const Material& m, const Shape& object, const AreaLight& light, const Tuple& point,
+               const Tuple& eyev, const Tuple& normalv, double light_intensity) {
+  const Color effective = effective_color(m, object, point, light.intensity);
+  const Color ambient = effective * m.ambient;
+  if (light_intensity <= 0) return ambient;
+  Color sum = kBlack;
+  const std::uint64_t key = light.jitter_key(point);
+  for (int v = 0; v < light.vsteps; ++v)
+    for (int u = 0; u < light.usteps; ++u)
+      sum += diffuse_specular(m, effective, light.intensity, light.sample(key, u, v), point, eyev, normalv);
+  return ambient + sum * (light_intensity / light.samples);
 }
 
 }  // namespace toroid

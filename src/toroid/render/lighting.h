@@ -1,4 +1,5 @@
-// Phong reflection (RTC chapters 6, 8 and 10).
+// Phong reflection (RTC chapters 6, 8 and 10, and the bonus chapter's area
+// lights).
 #pragma once
 
 #include "toroid/math/color.h"
@@ -23,5 +24,10 @@ inline Color lighting(const Material& material, const Shape& object, const Point
                       const Tuple& eyev, const Tuple& normalv, bool in_shadow = false) {
   return lighting(material, object, light, point, eyev, normalv, in_shadow ? 0.0 : 1.0);
 }
+
+// An area light: ambient once, plus the diffuse and specular light of every
+// sample (light.sample(light.jitter_key(point), u, v)) averaged, times light_intensity.
+Color lighting(const Material& material, const Shape& object, const AreaLight& light, const Tuple& point,
+               const Tuple& eyev, const Tuple& normalv, double light_intensity);
 
 }  // namespace toroid

@@ -8,6 +8,7 @@
 
 #include "support/approx.h"
 #include "toroid/render/pattern.h"
+#include "toroid/render/world.h"
 #include "toroid/shapes/sphere.h"
 
 namespace toroid {
@@ -88,6 +89,53 @@ TEST(Materials, LightingWithAPatternApplied) {
   const Color c2 = lighting(m, object, light, point(1.1, 0, 0), eyev, normalv, false);
   EXPECT_APPROX(c1, Color(1, 1, 1));
   EXPECT_APPROX(c2, Color(0, 0, 0));
+}
+
+// The soft-shadows bonus chapter's materials scenarios (from the book's
+// bonus chapter; not in the community transcription).
+TEST(Materials, LightingUsesLightIntensityToAttenuateColor) {
+  World w = default_world();
+  w.lights[0] = PointLight{point(0, 0, -10), Color{1, 1, 1}};
+  Shape& shape = *w.objects[0];
+  shape.material.ambient = 0.1;
+  shape.material.diffuse = 0.9;
+  shape.material.specular = 0;
+  shape.material.color = Color{1, 1, 1};
+  const Tuple pt = point(0, 0, -1);
+  const Tuple eyev = vector(0, 0, -1);
+  const Tuple normalv = vector(0, 0, -1);
+  const struct {
+    double intensity;
+    Color result;
+  } examples[] = {{1.0, Color(1, 1, 1)}, {0.5, Color(0.55, 0.55, 0.55)}, {0.0, Color(0.1, 0.1, 0.1)}};
+  for (const auto& e : examples) {
+    SCOPED_TRACE(e.intensity);
+    EXPECT_APPROX(lighting(shape.material, shape, w.lights[0], pt, eyev, normalv, e.intensity), e.result);
+  }
+}
+
+TEST(Materials, LightingSamplesTheAreaLight) {
+  const AreaLight light(point(-0.5, -0.5, -5), vector(1, 0, 0), 2, vector(0, 1, 0), 2, Color{1, 1, 1});
+  Sphere shape;
+  shape.material.ambient = 0.1;
+  shape.material.diffuse = 0.9;
+  shape.material.specular = 0;
+  shape.material.color = Color{1, 1, 1};
+  const Tuple eye = point(0, 0, -5);
+  const struct {
+    Tuple pt;
+    Color result;
+  } examples[] = {{point(0, 0, -1), Color(0.9965, 0.9965, 0.9965)},
+                  {point(0, 0.7071, -0.7071), Color(0.6232, 0.6232, 0.6232)}};
+  // The book prints four decimals: the exact values are 0.996505 and
+  // 0.623183 (0.1 + 0.9 x the mean cosine to the four cell centres), so the
+  // comparison is at the printed precision, 1e-4.
+  for (const auto& e : examples) {
+    SCOPED_TRACE(::testing::PrintToString(e.pt));
+    const Tuple eyev = normalize(eye - e.pt);
+    const Tuple normalv = vector(e.pt.x, e.pt.y, e.pt.z);
+    EXPECT_TRUE(approx_equal(lighting(shape.material, shape, light, e.pt, eyev, normalv, 1.0), e.result, 1e-4));
+  }
 }
 
 }  // namespace

@@ -12,19 +12,9 @@
 #include <cmath>
 #include <mutex>
 
+#include "toroid/math/hash.h"
+
 namespace toroid {
-namespace {
-
-std::uint64_t splitmix64(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
-
-double unit(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }  // [0, 1)
-
-}  // namespace
 
 void sample_offset(int x, int y, int s, int n, double& dx, double& dy) {
   if (n <= 1) {
@@ -38,8 +28,8 @@ void sample_offset(int x, int y, int s, int n, double& dx, double& dy) {
                             static_cast<std::uint64_t>(s) * 0x632be59bd9b4e019ULL;
   const std::uint64_t h1 = splitmix64(key);
   const std::uint64_t h2 = splitmix64(h1);
-  dx = ((s % cols) + unit(h1)) / cols;
-  dy = ((s / cols) + unit(h2)) / rows;
+  dx = ((s % cols) + unit_interval(h1)) / cols;
+  dy = ((s / cols) + unit_interval(h2)) / rows;
 }
 
 Canvas render_image(const Camera& camera, const World& world, const RenderOptions& options, RenderStats* stats) {

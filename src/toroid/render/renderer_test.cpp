@@ -42,11 +42,12 @@ TEST(Renderer, OneSampleMatchesTheBooksRender) {
   EXPECT_TRUE(same_bytes(render_image(c, w, o), render(c, w)));
 }
 
-TEST(Renderer, ThreadCountDoesNotChangeTheImage) {
-  const World w = torus_world();
+// Renders `w` with 1 and then 2 threads; expects the same image and ray
+// count; returns the one-thread statistics.
+RenderStats expect_same_with_one_and_two_threads(const World& w, int samples) {
   const Camera c = test_camera();
   RenderOptions o;
-  o.samples = 5;
+  o.samples = samples;
   o.tile_size = 8;
   o.threads = 1;
   RenderStats s1, s2;
@@ -56,9 +57,22 @@ TEST(Renderer, ThreadCountDoesNotChangeTheImage) {
   EXPECT_TRUE(same_bytes(one, two));
   EXPECT_EQ(s1.threads, 1);
   EXPECT_EQ(s2.threads, 2);
-  // At least the camera rays, and the same count whatever the threads.
-  EXPECT_GE(s1.rays, 37u * 23u * 5u);
   EXPECT_EQ(s1.rays, s2.rays);
+  return s1;
+}
+
+TEST(Renderer, ThreadCountDoesNotChangeTheImage) {
+  const RenderStats s = expect_same_with_one_and_two_threads(torus_world(), 5);
+  EXPECT_GE(s.rays, 37u * 23u * 5u);  // at least the camera rays
+}
+
+TEST(Renderer, AJitteredAreaLightDoesNotDependOnTheThreadCount) {
+  World w = torus_world();
+  w.lights.clear();
+  w.area_lights.emplace_back(point(-3, 4, -4), vector(2, 0, 0), 4, vector(0, 2, 0), 3, Color{1, 1, 1}, true);
+  const RenderStats s = expect_same_with_one_and_two_threads(w, 2);
+  // Well over the camera rays: 12 shadow rays per lit shade.
+  EXPECT_GT(s.rays, 37u * 23u * 2u * 4u);
 }
 
 TEST(Renderer, SamplesStayInTheirPixel) {

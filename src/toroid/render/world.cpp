@@ -35,8 +35,12 @@ std::uint64_t& rays_traced_on_this_thread() {
 }
 
 bool is_shadowed(const World& world, const Tuple& point, const PointLight& light) {
+  return is_shadowed(world, light.position, point);
+}
+
+bool is_shadowed(const World& world, const Tuple& light_position, const Tuple& point) {
   ++rays_traced_on_this_thread();
-  const Tuple to_light = light.position - point;
+  const Tuple to_light = light_position - point;
   const double distance = magnitude(to_light);
   const Ray ray{point, to_light / distance};
   // Separate from color_at's buffer; the caller's state stays untouched.
@@ -52,12 +56,31 @@ bool is_shadowed(const World& world, const Tuple& point, const PointLight& light
   return false;
 }
 
+double intensity_at(const PointLight& light, const Tuple& point, const World& world) {
+  return is_shadowed(world, light.position, point) ? 0.0 : 1.0;
+}
+
+double intensity_at(const AreaLight& light, const Tuple& point, const World& world) {
+  int lit = 0;
+  const std::uint64_t key = light.jitter_key(point);
+  for (int v = 0; v < light.vsteps; ++v)
+    for (int u = 0; u < light.usteps; ++u)
+      if (!is_shadowed(world, light.sample(key, u, v), point)) ++lit;
+  return static_cast<double>(lit) / light.samples;
+}
+
 Color shade_hit(const World& world, const Computations& comps, int remaining) {
   const Material& m = comps.object->material;
   Color surface = kBlack;
   for (const PointLight& light : world.lights) {
     const bool shadowed = is_shadowed(world, comps.over_point, light);
     surface += lighting(m, *comps.object, light, comps.over_point, comps.eyev, comps.normalv, shadowed);
+  }
+  for (const AreaLight& light : world.area_lights) {
+    // A light wholly behind the surface lights nothing: spare its shadow rays.
+    const double visible =
+        light.in_front_of(comps.over_point, comps.normalv) ? intensity_at(light, comps.over_point, world) : 0.0;
+    surface += lighting(m, *comps.object, light, comps.over_point, comps.eyev, comps.normalv, visible);
   }
   const Color reflected = reflected_color(world, comps, remaining);
   const Color refracted = refracted_color(world, comps, remaining);

@@ -18,7 +18,9 @@ class Shape;
 
 struct World {
   std::vector<std::shared_ptr<Shape>> objects;
-  std::vector<PointLight> lights;  // their contributions add up
+  // Every light's contribution adds up.
+  std::vector<PointLight> lights;
+  std::vector<AreaLight> area_lights;
 };
 
 // How many bounces color_at follows by default (reflection and refraction).
@@ -36,6 +38,14 @@ void intersect_world(const World& world, const Ray& ray, Intersections& xs);
 
 // Whether an object that casts shadows lies between `point` and the light.
 bool is_shadowed(const World& world, const Tuple& point, const PointLight& light);
+// The bonus chapter's form: whether an object that casts shadows lies
+// between `point` and `light_position`.
+bool is_shadowed(const World& world, const Tuple& light_position, const Tuple& point);
+
+// The fraction of the light that reaches `point`: 0 or 1 for a point light,
+// the fraction of unshadowed samples (light.sample) for an area light.
+double intensity_at(const PointLight& light, const Tuple& point, const World& world);
+double intensity_at(const AreaLight& light, const Tuple& point, const World& world);
 
 // Surface colour (every light) plus reflected and refracted colour, with
 // `remaining` bounces left.

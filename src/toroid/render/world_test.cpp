@@ -40,7 +40,7 @@ bool contains_sphere(const World& w, const Matrix4& transform, const Material& m
 
 // Three of the book's expected colours (reflected colour, shade_hit with a
 // reflective material, refracted ray) are known to differ from an exact
-// double computation by 1e-5 to 3e-5: no offset kShadowBias reproduces them
+// double computation by 1e-5 to 3e-5: no surface offset (surface_bias) reproduces them
 // to 1e-5 (tried 0, 1e-6, 1e-5, 5e-5, 1e-4). The book's own comparisons pass
 // at 1e-4, so those three scenarios compare at this tolerance.
 constexpr double kBookValueTolerance = 1e-4;
@@ -312,7 +312,91 @@ TEST(World, ShadeHitWithAReflectiveTransparentMaterial) {
   EXPECT_APPROX(shade_hit(w, comps, 5), Color(0.93391, 0.69643, 0.69243));
 }
 
+// The soft-shadows bonus chapter (from the book's bonus chapter; not in the
+// community transcription).
+TEST(World, IsShadowedTestsForOcclusionBetweenTwoPoints) {
+  const World w = default_world();
+  const Tuple light_position = point(-10, -10, -10);
+  const struct {
+    Tuple pt;
+    bool result;
+  } examples[] = {
+      {point(-10, -10, 10), false},
+      {point(10, 10, 10), true},
+      {point(-20, -20, -20), false},
+      {point(-5, -5, -5), false},
+  };
+  for (const auto& e : examples) {
+    SCOPED_TRACE(::testing::PrintToString(e.pt));
+    EXPECT_EQ(is_shadowed(w, light_position, e.pt), e.result);
+  }
+}
+
 // Beyond the book.
+
+// A floor (y = 0) under a ball of radius 0.5 at y = 1, lit by a 2 x 2 area
+// light of 4 x 4 cells at y = 5 centred above the ball.
+World soft_shadow_world(bool jitter) {
+  World w;
+  auto floor = std::make_shared<Plane>();
+  auto ball = std::make_shared<Sphere>();
+  ball->set_transform(translation(0, 1, 0) * scaling(0.5, 0.5, 0.5));
+  w.objects = {floor, ball};
+  w.area_lights.emplace_back(point(-1, 5, -1), vector(2, 0, 0), 4, vector(0, 0, 2), 4, Color{1, 1, 1}, jitter);
+  return w;
+}
+
+TEST(WorldExtra, AnAreaLightCastsAnUmbraAndAPenumbra) {
+  for (const bool jitter : {false, true}) {
+    SCOPED_TRACE(jitter);
+    const World w = soft_shadow_world(jitter);
+    const AreaLight& light = w.area_lights[0];
+    // Just above the floor (a point on it would shadow itself).
+    const auto on_floor = [](double x) { return point(x, 1e-3, 0); };
+    EXPECT_EQ(intensity_at(light, on_floor(0), w), 0.0);  // umbra: the ball hides the whole light
+    EXPECT_EQ(intensity_at(light, on_floor(5), w), 1.0);  // fully lit
+    // Between them the visible fraction rises through values strictly between.
+    int partial = 0;
+    double last = 0;
+    for (double x = 0; x <= 5; x += 0.05) {
+      const double f = intensity_at(light, on_floor(x), w);
+      if (f > 0 && f < 1) ++partial;
+      if (!jitter) EXPECT_GE(f, last) << "x = " << x;
+      last = f;
+    }
+    EXPECT_GE(partial, 3);
+    // The floor's colour follows: umbra darker than penumbra darker than lit.
+    const auto floor_color = [&](double x) {
+      return color_at(w, {point(x, 3, -3), normalize(vector(0, -3, 3))}).r;
+    };
+    double penumbra_x = 0;
+    for (double x = 0; x <= 5; x += 0.05)
+      if (const double f = intensity_at(light, on_floor(x), w); f > 0.3 && f < 0.7) penumbra_x = x;
+    ASSERT_GT(penumbra_x, 0);
+    EXPECT_LT(floor_color(0), floor_color(penumbra_x));
+    EXPECT_LT(floor_color(penumbra_x), floor_color(5));
+  }
+}
+
+TEST(WorldExtra, AOneCellAreaLightShadesLikeAPointLightAtItsCentre) {
+  World area = default_world(), point_lit = default_world();
+  area.lights.clear();
+  area.area_lights.emplace_back(point(-11, 9, -10), vector(2, 0, 0), 1, vector(0, 2, 0), 1, Color{1, 1, 1});
+  point_lit.lights[0] = PointLight{point(-10, 10, -10), Color{1, 1, 1}};
+  for (const Ray& r : {Ray{point(0, 0, -5), vector(0, 0, 1)}, Ray{point(0, 0, 0.75), vector(0, 0, -1)},
+                       Ray{point(3, -3, -5), normalize(vector(-3, 3.2, 5))}}) {
+    EXPECT_APPROX(color_at(area, r), color_at(point_lit, r));
+  }
+}
+
+TEST(WorldExtra, AnAreaLightBehindTheSurfaceCostsNoShadowRays) {
+  World w = soft_shadow_world(false);
+  const Ray up{point(0.3, -2, 0.2), vector(0, 1, 0)};  // hits the floor from below
+  const std::uint64_t before = rays_traced_on_this_thread();
+  const Color c = color_at(w, up);
+  EXPECT_EQ(rays_traced_on_this_thread() - before, 1u);  // the camera ray alone
+  EXPECT_APPROX(c, Material{}.color * Material{}.ambient);
+}
 
 TEST(WorldExtra, ShapesThatCastNoShadowAreSkippedByShadowRays) {
   World w = default_world();

@@ -17,9 +17,11 @@
 #include <utility>
 #include <vector>
 
+#include "toroid/io/image_reader.h"
 #include "toroid/math/transform.h"
 #include "toroid/render/image_limits.h"
 #include "toroid/render/pattern.h"
+#include "toroid/render/texture_map.h"
 #include "toroid/scene/obj_file.h"
 #include "toroid/shapes/cone.h"
 #include "toroid/shapes/csg.h"
@@ -215,6 +217,18 @@ class Loader {
       fail(where, what + " nested more than " + std::to_string(kMaxNesting) + " deep");
   }
 
+  [[noreturn]] void fail_not_found(const YAML::Node& where, const std::string& kind, const std::string& file,
+                                   const std::filesystem::path& resolved) const {
+    fail(where, kind + " file '" + file + "' not found" +
+                    (resolved.string() == file ? "" : " (looked for '" + resolved.string() + "')"));
+  }
+
+  // A file named in the scene: relative names are relative to the scene's directory.
+  std::filesystem::path resolve(const std::string& file) const {
+    const std::filesystem::path p(file);
+    return (p.is_absolute() ? p : base_dir_ / p).lexically_normal();
+  }
+
   const Define& lookup_define(const YAML::Node& name_node, const std::string& what) const {
     const std::string n = name(name_node, what);
     auto it = defines_.find(n);
@@ -312,29 +326,100 @@ class Loader {
   }
 
   // Patterns and materials ---------------------------------------------------
-  // A `map` pattern (UV texture mapping) is not supported: name a missing
-  // texture file first, since that is what the user must fix anyway.
-  [[noreturn]] void unsupported_map(const YAML::Node& pattern, const YAML::Node& type_node) const {
-    missing_texture(pattern);
-    fail(type_node, "pattern type '" + type_node.Scalar() +
-                        "' (UV texture mapping) is not supported yet; use stripes, gradient, rings, checkers or "
-                        "blended");
+  // Two colours under `colors` (stripes, checkers, uv checkers, ...).
+  std::pair<Color, Color> two_colors(const std::vector<Entry>& es, const YAML::Node& node, const std::string& what) const {
+    const Entry& cs = require(es, "colors", node, what);
+    if (!cs.value.IsSequence() || cs.value.size() != 2)
+      fail(cs.value, "'colors' must be a list of 2 colors [r, g, b], got " +
+                         (cs.value.IsSequence() ? std::to_string(cs.value.size()) + " entries" : describe(cs.value)));
+    return {color(cs.value[0], "a color"), color(cs.value[1], "a color")};
   }
 
-  // Fails naming the first texture file (in file order) that does not exist.
-  void missing_texture(const YAML::Node& n) const {
-    if (n.IsSequence())
-      for (const YAML::Node& c : n) missing_texture(c);
-    if (!n.IsMap()) return;
-    for (auto it = n.begin(); it != n.end(); ++it) {
-      if (it->first.IsScalar() && it->first.Scalar() == "file" && it->second.IsScalar()) {
-        const auto p = base_dir_ / it->second.Scalar();
-        if (!std::filesystem::exists(p))
-          fail(it->second, "texture file '" + it->second.Scalar() + "' not found (looked for '" + p.string() +
-                               "'); texture-mapped patterns (type: map) are not supported yet either");
-      }
-      missing_texture(it->second);
+  // Texture mapping (RTC bonus chapter) ---------------------------------------
+  // An image file, read once however many patterns name it.
+  std::shared_ptr<const Canvas> image(const YAML::Node& file_node) const {
+    const std::string file = name(file_node, "file");
+    const std::filesystem::path p = resolve(file);
+    std::error_code ec;  // when the file cannot even be looked at, read_image says why
+    if (!std::filesystem::exists(p, ec) && !ec)
+      fail_not_found(file_node, "image", file, p);
+    const std::filesystem::path canonical = std::filesystem::canonical(p, ec);
+    const std::string key = ec ? p.string() : canonical.string();
+    if (auto it = images_.find(key); it != images_.end()) return it->second;
+    try {
+      return images_[key] = std::make_shared<const Canvas>(read_image(p.string()));
+    } catch (const ImageReadError& e) {
+      fail(file_node, "cannot load image '" + file + "': " + e.what());
     }
+  }
+
+  std::shared_ptr<const UvPattern> uv_pattern(const YAML::Node& node) const {
+    const auto es = entries(node, "a uv pattern");
+    const Entry& type = require(es, "type", node, "a uv pattern");
+    const std::string kind = name(type.value, "uv pattern type");
+    if (kind == "checkers") {
+      check_keys(es, {"type", "width", "height", "colors"}, "a checkers uv pattern");
+      const double w = positive(require(es, "width", node, "a checkers uv pattern").value, "'width'");
+      const double h = positive(require(es, "height", node, "a checkers uv pattern").value, "'height'");
+      const auto [a, b] = two_colors(es, node, "a checkers uv pattern");
+      return std::make_shared<UvCheckers>(w, h, a, b);
+    }
+    if (kind == "align_check") {
+      check_keys(es, {"type", "colors"}, "an align_check uv pattern");
+      const Entry& cs = require(es, "colors", node, "an align_check uv pattern");
+      const auto ces = entries(cs.value, "align_check 'colors'");
+      check_keys(ces, {"main", "ul", "ur", "bl", "br"}, "align_check 'colors'");
+      auto corner = [&](const char* k) { return color(require(ces, k, cs.value, "align_check 'colors'").value, k); };
+      return std::make_shared<UvAlignCheck>(corner("main"), corner("ul"), corner("ur"), corner("bl"), corner("br"));
+    }
+    if (kind == "image") {
+      check_keys(es, {"type", "file"}, "an image uv pattern");
+      return std::make_shared<UvImage>(image(require(es, "file", node, "an image uv pattern").value));
+    }
+    fail(type.value, "unknown uv pattern type '" + kind + "'" + suggestion(kind, {"checkers", "align_check", "image"}) +
+                         " (use checkers, align_check or image)");
+  }
+
+  // `type: map`: a mapping and a uv pattern, or (mapping: cube) a uv pattern
+  // per face. `mapping: torus` needs the torus's radii: `major`/`minor` when
+  // given, else those of the torus whose material this is.
+  std::shared_ptr<Pattern> map_pattern(const YAML::Node& node, const std::vector<Entry>& es) const {
+    const Entry& m = require(es, "mapping", node, "a map pattern");
+    const std::string mapping = name(m.value, "mapping");
+    const std::vector<std::string> mappings{"spherical", "planar", "cylindrical", "cube", "torus"};
+    if (std::find(mappings.begin(), mappings.end(), mapping) == mappings.end())
+      fail(m.value, "unknown mapping '" + mapping + "'" + suggestion(mapping, mappings) +
+                        " (use spherical, planar, cylindrical, cube or torus)");
+    if (mapping == "cube") {
+      check_keys(es, {"type", "mapping", "left", "right", "front", "back", "up", "down", "transform"},
+                 "a cube map pattern");
+      const std::vector<std::string> faces{"left", "right", "front", "back", "up", "down"};
+      for (const std::string& f : faces) require(es, f, node, "a cube map pattern");
+      // Read in file order, so that the first bad face in the file is reported.
+      std::map<std::string, std::shared_ptr<const UvPattern>> uv;
+      for (const Entry& e : es)
+        if (std::find(faces.begin(), faces.end(), e.key) != faces.end()) uv[e.key] = uv_pattern(e.value);
+      return std::make_shared<CubeMapPattern>(uv["left"], uv["front"], uv["right"], uv["back"], uv["up"], uv["down"]);
+    }
+    std::vector<std::string> keys{"type", "mapping", "uv_pattern", "transform"};
+    if (mapping == "torus") keys.insert(keys.end(), {"major", "minor"});
+    check_keys(es, keys, "a '" + mapping + "' map pattern");
+    auto uv = uv_pattern(require(es, "uv_pattern", node, "a map pattern").value);
+    UvMapping f;
+    if (mapping == "spherical") f = spherical_map;
+    else if (mapping == "planar") f = planar_map;
+    else if (mapping == "cylindrical") f = cylindrical_map;
+    else {
+      const Entry* major = find(es, "major");
+      const Entry* minor = find(es, "minor");
+      if ((!major || !minor) && !material_torus_)
+        fail(m.value, "mapping 'torus' needs the radii of the torus: use it in the material of a torus, or give "
+                      "'major' and 'minor'");
+      const double R = major ? positive(major->value, "'major'") : material_torus_->major;
+      const double r = minor ? positive(minor->value, "'minor'") : material_torus_->minor;
+      f = [R, r](const Tuple& p) { return toroidal_map(R, r, p); };
+    }
+    return std::make_shared<TextureMapPattern>(std::move(uv), std::move(f));
   }
 
   std::shared_ptr<Pattern> pattern(const YAML::Node& node, std::size_t depth = 1) const {
@@ -343,23 +428,20 @@ class Loader {
     const auto es = entries(node, "a pattern");
     const Entry& type = require(es, "type", node, "a pattern");
     const std::string kind = name(type.value, "pattern type");
-    if (kind == "map" || kind == "image" || kind == "align_check" || kind == "texture_map") unsupported_map(node, type.value);
     std::shared_ptr<Pattern> p;
-    if (kind == "blended") {
+    if (kind == "map") {
+      p = map_pattern(node, es);
+    } else if (kind == "blended") {
       check_keys(es, {"type", "patterns", "transform"}, "a blended pattern");
       const Entry& ps = require(es, "patterns", node, "a blended pattern");
       if (!ps.value.IsSequence() || ps.value.size() != 2) fail(ps.value, "'patterns' must be a list of 2 patterns");
       p = std::make_shared<BlendedPattern>(pattern(ps.value[0], depth + 1), pattern(ps.value[1], depth + 1));
     } else {
-      const std::vector<std::string> kinds{"stripes", "gradient", "rings", "checkers", "blended"};
+      const std::vector<std::string> kinds{"stripes", "gradient", "rings", "checkers", "blended", "map"};
       if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
         fail(type.value, "unknown pattern type '" + kind + "'" + suggestion(kind, kinds));
       check_keys(es, {"type", "colors", "transform"}, "a pattern");
-      const Entry& cs = require(es, "colors", node, "a '" + kind + "' pattern");
-      if (!cs.value.IsSequence() || cs.value.size() != 2)
-        fail(cs.value, "'colors' must be a list of 2 colors [r, g, b], got " +
-                           (cs.value.IsSequence() ? std::to_string(cs.value.size()) + " entries" : describe(cs.value)));
-      const Color a = color(cs.value[0], "a color"), b = color(cs.value[1], "a color");
+      const auto [a, b] = two_colors(es, node, "a '" + kind + "' pattern");
       if (kind == "stripes") p = std::make_shared<StripePattern>(a, b);
       else if (kind == "gradient") p = std::make_shared<GradientPattern>(a, b);
       else if (kind == "rings") p = std::make_shared<RingPattern>(a, b);
@@ -459,6 +541,37 @@ class Loader {
     }
   }
 
+  // RenderMan's partial torus: `theta-max` in (0, 2 pi], `phi-min` <
+  // `phi-max` within [-2 pi, 2 pi] and at most 2 pi apart (radians). Values
+  // within 1e-4 beyond a limit (6.2832 for 2 pi) are taken as the limit.
+  TorusSweep torus_sweep(const std::vector<Entry>& es) const {
+    constexpr double kTwoPi = TorusSweep::kTwoPi, kSlack = 1e-4;
+    TorusSweep sw;
+    if (const Entry* e = find(es, "theta-max")) {
+      sw.theta_max = number(e->value);
+      if (!(sw.theta_max > 0 && sw.theta_max <= kTwoPi + kSlack))
+        fail(e->value, "torus 'theta-max' must be in (0, 2 pi] radians, got " + e->value.Scalar());
+      sw.theta_max = std::min(sw.theta_max, kTwoPi);
+    }
+    const Entry* lo = find(es, "phi-min");
+    const Entry* hi = find(es, "phi-max");
+    for (const Entry* e : {lo, hi}) {
+      if (!e) continue;
+      const double v = number(e->value);
+      if (std::abs(v) > kTwoPi + kSlack)
+        fail(e->value, "torus '" + e->key + "' must be in [-2 pi, 2 pi] radians, got " + e->value.Scalar());
+      (e == lo ? sw.phi_min : sw.phi_max) = std::clamp(v, -kTwoPi, kTwoPi);
+    }
+    const YAML::Node where = hi ? hi->value : lo ? lo->value : YAML::Node();
+    if (!(sw.phi_min < sw.phi_max))
+      fail(where, "torus 'phi-max' must be greater than 'phi-min' (" + std::to_string(sw.phi_max) +
+                      " <= " + std::to_string(sw.phi_min) + ")");
+    if (sw.phi_max - sw.phi_min > kTwoPi + kSlack)
+      fail(where, "torus 'phi-max' - 'phi-min' must be at most 2 pi radians");
+    sw.phi_max = std::min(sw.phi_max, sw.phi_min + kTwoPi);
+    return sw;
+  }
+
   static void set_shadow_recursive(Shape& s, bool casts) {
     s.casts_shadow = casts;
     if (auto* g = dynamic_cast<Group*>(&s))
@@ -472,6 +585,32 @@ class Loader {
   struct Inherited {
     const Material* material = nullptr;
   };
+
+  struct TorusRadii {
+    double major, minor;
+  };
+  TorusRadii torus_radii(const std::vector<Entry>& es) const {
+    const Torus defaults;
+    const Entry* major = find(es, "major");
+    const Entry* minor = find(es, "minor");
+    return {major ? positive(major->value, "torus 'major'") : defaults.major(),
+            minor ? positive(minor->value, "torus 'minor'") : defaults.minor()};
+  }
+  // While a torus's own material is read, a torus mapping in it takes the
+  // torus's radii (map_pattern).
+  class MaterialTorus {
+   public:
+    MaterialTorus(const Loader& loader, std::optional<TorusRadii> radii)
+        : loader_(loader), saved_(std::exchange(loader.material_torus_, radii)) {}
+    ~MaterialTorus() { loader_.material_torus_ = saved_; }
+    MaterialTorus(const MaterialTorus&) = delete;
+    MaterialTorus& operator=(const MaterialTorus&) = delete;
+
+   private:
+    const Loader& loader_;
+    std::optional<TorusRadii> saved_;
+  };
+
 
   // `depth`: 1 for a scene item, one more inside each group or CSG.
   std::shared_ptr<Shape> shape(const YAML::Node& item, const Inherited& inh, std::set<std::string>& visiting,
@@ -488,7 +627,8 @@ class Loader {
     else if (kind == "group") allowed.push_back("children");
     else if (kind == "csg") allowed.insert(allowed.end(), {"operation", "left", "right"});
     else if (kind == "obj") allowed.push_back("file");
-    else if (kind == "torus") allowed.insert(allowed.end(), {"major", "minor", "solver"});
+    else if (kind == "torus")
+      allowed.insert(allowed.end(), {"major", "minor", "solver", "theta-max", "phi-min", "phi-max", "spindle"});
     check_keys(es, allowed, "a " + kind);
 
     Material material = inh.material ? *inh.material : Material{};
@@ -496,6 +636,7 @@ class Loader {
     bool has_material = false, has_shadow = false;
     if (const Entry* m = find(es, "material")) {
       material = Material{};
+      const MaterialTorus on_torus(*this, kind == "torus" ? std::optional(torus_radii(es)) : std::nullopt);
       apply_material(m->value, material, casts_shadow);
       has_material = true;
       has_shadow = !casts_shadow;
@@ -529,10 +670,8 @@ class Loader {
         s = c;
       }
     } else if (kind == "torus") {
-      double major = 1.0, minor = 0.25;
-      if (const Entry* e = find(es, "major")) major = positive(e->value, "torus 'major'");
-      if (const Entry* e = find(es, "minor")) minor = positive(e->value, "torus 'minor'");
-      auto t = std::make_shared<Torus>(major, minor);
+      const TorusRadii radii = torus_radii(es);
+      auto t = std::make_shared<Torus>(radii.major, radii.minor);
       if (const Entry* e = find(es, "solver")) {
         const auto sv = solver_from_name(name(e->value, "solver"));
         if (!sv)
@@ -541,6 +680,13 @@ class Loader {
         t->set_solver(*sv);
       }
       if (options_.solver) t->set_solver(*options_.solver);
+      t->set_sweep(torus_sweep(es));
+      if (const Entry* e = find(es, "spindle")) {
+        const std::string v = name(e->value, "spindle");
+        if (v != "whole" && v != "outer")
+          fail(e->value, "unknown spindle surface '" + v + "' (use whole or outer)" + suggestion(v, {"whole", "outer"}));
+        t->set_spindle(v == "outer" ? SpindleSurface::Outer : SpindleSurface::Whole);
+      }
       s = t;
     } else if (kind == "group") {
       auto g = std::make_shared<Group>();
@@ -569,10 +715,9 @@ class Loader {
     } else if (kind == "obj") {
       const Entry& f = require(es, "file", kind_node, "an obj");
       const std::string file = name(f.value, "file");
-      const std::filesystem::path p =
-          (std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : base_dir_ / file).lexically_normal();
+      const std::filesystem::path p = resolve(file);
       if (!std::filesystem::exists(p))
-        fail(f.value, "OBJ file '" + file + "' not found" + (p.string() == file ? "" : " (looked for '" + p.string() + "')"));
+        fail_not_found(f.value, "OBJ", file, p);
       try {
         s = load_obj(p);
       } catch (const std::exception& e) {
@@ -602,6 +747,8 @@ class Loader {
   mutable std::size_t shapes_made_ = 0, patterns_made_ = 0;
   // Composed transform defines by name (cleared whenever a define is added).
   mutable std::map<std::string, Matrix4> transform_defines_;
+  mutable std::optional<TorusRadii> material_torus_;                      // see MaterialTorus
+  mutable std::map<std::string, std::shared_ptr<const Canvas>> images_;  // by canonical path
 };
 
 Scene Loader::load(const YAML::Node& root) {
@@ -660,9 +807,7 @@ Scene Loader::load(const YAML::Node& root) {
       check_keys(es, {"add", "at", "intensity", "corner", "uvec", "vvec", "usteps", "vsteps", "jitter"}, "a light");
       const Color intensity = color(require(es, "intensity", item, "a light").value, "intensity");
       if (const Entry* corner = find(es, "corner")) {
-        // Area light (soft shadows bonus chapter): a usteps x vsteps grid of
-        // point lights at the cell centres sharing the intensity. `jitter`
-        // is accepted but the samples stay at the cell centres.
+        // Area light (soft shadows bonus chapter).
         const Tuple c0 = point3(corner->value, "corner");
         const Tuple u = vector3(require(es, "uvec", item, "an area light").value, "uvec");
         const Tuple v = vector3(require(es, "vvec", item, "an area light").value, "vvec");
@@ -671,11 +816,9 @@ Scene Loader::load(const YAML::Node& root) {
         const int nu = integer(us.value), nv = integer(vs.value);
         if (nu <= 0 || nu > 64) fail(us.value, "usteps must be in 1..64");
         if (nv <= 0 || nv > 64) fail(vs.value, "vsteps must be in 1..64");
-        if (const Entry* j = find(es, "jitter")) boolean(j->value);
-        const Color each = intensity / static_cast<double>(nu * nv);
-        for (int i = 0; i < nu; ++i)
-          for (int j = 0; j < nv; ++j)
-            world.lights.push_back(PointLight{c0 + u * ((i + 0.5) / nu) + v * ((j + 0.5) / nv), each});
+        bool jitter = false;
+        if (const Entry* j = find(es, "jitter")) jitter = boolean(j->value);
+        world.area_lights.emplace_back(c0, u, nu, v, nv, intensity, jitter);
       } else {
         for (const char* k : {"uvec", "vvec", "usteps", "vsteps", "jitter"})
           if (const Entry* e = find(es, k)) fail(e->key_node, std::string("'") + k + "' needs 'corner' (area light)");

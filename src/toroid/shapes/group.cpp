@@ -81,10 +81,11 @@ void Group::divide(std::size_t threshold) {
     const std::size_t count = children_.size();
     const BoundingBox box = bounds_;
     auto [left, right] = take_partition();
-    if (left.size() == count || right.size() == count) {
-      // Nothing separates them (all in one degenerate half): a subgroup of
-      // everything would only recurse forever, so keep them here.
-      children_ = left.empty() ? std::move(right) : std::move(left);
+    if (left.size() == count || right.size() == count || children_.size() == count) {
+      // Nothing separates them (all in one degenerate half, or all across
+      // the split): a subgroup of everything would only recurse forever, so
+      // keep them here.
+      if (children_.empty()) children_ = left.empty() ? std::move(right) : std::move(left);
     } else {
       // Beyond the book: the children that straddle the split stay here in
       // the book's version, and in a large mesh every ray that enters this

@@ -213,6 +213,17 @@ TEST(Groups, DividingCoincidentChildrenTerminates) {
   EXPECT_EQ(g->size(), 10u);
 }
 
+TEST(Groups, DividingChildrenThatAllStraddleTheSplitTerminates) {
+  // Long spheres stacked in y: the box is widest in x, the split is at x = 0,
+  // and every child crosses it, so neither half takes any (a lathed mesh's
+  // ring of triangles around its axis does this).
+  ShapeList straddling;
+  for (int i = 0; i < 10; ++i) straddling.push_back(sphere_with(translation(0, 2.0 * i, 0) * scaling(20, 1, 1)));
+  auto g = group_of(straddling);
+  g->divide(2);
+  EXPECT_EQ(g->children(), straddling);
+}
+
 TEST(Groups, DividingKeepsEveryIntersection) {
   Group flat;
   auto bvh = std::make_shared<Group>();

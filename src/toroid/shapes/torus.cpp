@@ -1,12 +1,86 @@
 #include "toroid/shapes/torus.h"
 
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
 #include "toroid/shapes/torus_intersect.h"
 
 namespace toroid {
 
+namespace {
+
+// Extremes of cos and sin over the angles [lo, hi]: at the ends or at the
+// multiples of pi/2 inside, whose values are taken exactly.
+struct TrigRange {
+  double cos_min, cos_max, sin_min, sin_max;
+  void include(double c, double s) {
+    cos_min = std::min(cos_min, c), cos_max = std::max(cos_max, c);
+    sin_min = std::min(sin_min, s), sin_max = std::max(sin_max, s);
+  }
+};
+
+TrigRange trig_range(double lo, double hi) {
+  TrigRange t{std::cos(lo), std::cos(lo), std::sin(lo), std::sin(lo)};
+  t.include(std::cos(hi), std::sin(hi));
+  constexpr double kQuarter = std::numbers::pi / 2;
+  static constexpr double kCos[4] = {1, 0, -1, 0}, kSin[4] = {0, 1, 0, -1};
+  for (long k = static_cast<long>(std::ceil(lo / kQuarter)); k * kQuarter <= hi; ++k) {
+    const long q = ((k % 4) + 4) % 4;
+    t.include(kCos[q], kSin[q]);
+  }
+  return t;
+}
+
+}  // namespace
+
+bool TorusSweep::valid() const {
+  return std::isfinite(theta_max) && std::isfinite(phi_min) && std::isfinite(phi_max) && theta_max > 0 &&
+         theta_max <= kTwoPi && phi_min >= -kTwoPi && phi_max <= kTwoPi && phi_min < phi_max &&
+         phi_max - phi_min <= kTwoPi;
+}
+
+void Torus::set_sweep(const TorusSweep& sweep) {
+  assert(sweep.valid());
+  sweep_ = sweep;
+  keeps_all_ = sweep_.whole() && spindle_ == SpindleSurface::Whole;
+  bounds_changed();
+}
+
+void Torus::set_spindle(SpindleSurface s) {
+  spindle_ = s;
+  keeps_all_ = sweep_.whole() && spindle_ == SpindleSurface::Whole;
+  bounds_changed();
+}
+
+bool Torus::keeps(const Tuple& surface_point) const {
+  if (keeps_all_) return true;
+  const double p[3] = {surface_point.x, surface_point.y, surface_point.z};
+  if (spindle_ == SpindleSurface::Outer && on_torus_lemon(major_, minor_, p)) return false;
+  if (sweep_.whole()) return true;
+  double theta, phi;
+  torus_angles(major_, minor_, p, &theta, &phi);
+  if (theta > sweep_.theta_max) return false;
+  const auto in = [&](double a) { return a >= sweep_.phi_min && a <= sweep_.phi_max; };
+  return in(phi) || in(phi + TorusSweep::kTwoPi) || in(phi - TorusSweep::kTwoPi);
+}
+
 BoundingBox Torus::bounds() const {
-  const double e = major_ + minor_;
-  return {point(-e, -e, -minor_), point(e, e, minor_)};
+  // Points are rho_s (cos theta, sin theta) with rho_s = R + r cos phi
+  // (negative on a spindle's lemon) and z = r sin phi: x and y are bilinear
+  // in rho_s and (cos theta, sin theta), so the corners of their ranges bound
+  // them exactly; z depends on phi alone.
+  const TrigRange phi = trig_range(sweep_.phi_min, sweep_.phi_max);
+  const TrigRange theta = trig_range(0, sweep_.theta_max);
+  double rho_lo = major_ + minor_ * phi.cos_min, rho_hi = major_ + minor_ * phi.cos_max;
+  if (spindle_ == SpindleSurface::Outer) rho_lo = std::max(rho_lo, 0.0), rho_hi = std::max(rho_hi, 0.0);
+  const auto span = [&](double lo, double hi) {
+    const double c[4] = {rho_lo * lo, rho_lo * hi, rho_hi * lo, rho_hi * hi};
+    return std::minmax({c[0], c[1], c[2], c[3]});
+  };
+  const auto [x_lo, x_hi] = span(theta.cos_min, theta.cos_max);
+  const auto [y_lo, y_hi] = span(theta.sin_min, theta.sin_max);
+  return {point(x_lo, y_lo, minor_ * phi.sin_min), point(x_hi, y_hi, minor_ * phi.sin_max)};
 }
 
 void Torus::local_intersect(const Ray& ray, Intersections& xs) const {
@@ -14,7 +88,8 @@ void Torus::local_intersect(const Ray& ray, Intersections& xs) const {
   const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
   double t[4];
   const int n = intersect_torus(major_, minor_, o, d, t, solver_);
-  for (int i = 0; i < n; ++i) xs.push_back({t[i], this});
+  for (int i = 0; i < n; ++i)
+    if (keeps_all_ || keeps(ray.position(t[i]))) xs.push_back({t[i], this});
 }
 
 Tuple Torus::local_normal_at(const Tuple& p, const Intersection&) const {

@@ -1,12 +1,36 @@
 // The torus shape: ring in the object's xy-plane, axis z, centred at the
 // origin; `major` (R) to the tube's centre, `minor` (r) the tube's radius.
-// All math lives in torus_intersect.h; this class adapts it to Shape.
+// All math lives in torus_intersect.h; this class adapts it to Shape and adds
+// RenderMan's partial tori (RiTorus's thetamax, phimin, phimax) and the choice
+// of a spindle torus's surface.
 #pragma once
+
+#include <numbers>
 
 #include "toroid/roots/quartic.h"
 #include "toroid/shapes/shape.h"
 
 namespace toroid {
+
+// Which part of a spindle torus's (minor > major) quartic surface is kept:
+// all of it, or the outer sheet only (the inner "lemon" removed).
+enum class SpindleSurface { Whole, Outer };
+
+// The swept part of the surface, in the angles of torus_angles(): theta
+// around the z axis from +x towards +y, phi around the tube from the outer
+// equator towards +z. A point is kept when theta <= theta_max and phi (or
+// phi +- 2 pi) lies in [phi_min, phi_max].
+struct TorusSweep {
+  static constexpr double kTwoPi = 2 * std::numbers::pi;
+  double theta_max = kTwoPi;
+  double phi_min = -std::numbers::pi;
+  double phi_max = std::numbers::pi;
+
+  // 0 < theta_max <= 2 pi; -2 pi <= phi_min < phi_max <= 2 pi; phi_max -
+  // phi_min <= 2 pi; all finite.
+  bool valid() const;
+  bool whole() const { return theta_max >= kTwoPi && phi_max - phi_min >= kTwoPi; }
+};
 
 class Torus : public Shape {
  public:
@@ -18,15 +42,30 @@ class Torus : public Shape {
   void set_solver(QuarticSolver s) { solver_ = s; }
   QuarticSolver solver() const { return solver_; }
 
+  // Precondition: sweep.valid().
+  void set_sweep(const TorusSweep& sweep);
+  const TorusSweep& sweep() const { return sweep_; }
+  void set_spindle(SpindleSurface s);
+  SpindleSurface spindle() const { return spindle_; }
+
+  // Whether a point on the quartic's surface belongs to this torus (the sweep
+  // and the spindle choice).
+  bool keeps(const Tuple& surface_point) const;
+
+  // The box of the kept part (exact for the swept angles' ranges).
   BoundingBox bounds() const override;
-  // Appends every real root (sorted), so CSG and refraction see the ray
-  // leave and re-enter the same torus.
+  // Appends every kept root (sorted), so CSG and refraction see the ray leave
+  // and re-enter the same torus. A partial torus is an open surface: a ray
+  // through an open edge meets its inside.
   void local_intersect(const Ray& ray, Intersections& xs) const override;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 
  private:
   double major_, minor_;
   QuarticSolver solver_ = QuarticSolver::Default;
+  TorusSweep sweep_;
+  SpindleSurface spindle_ = SpindleSurface::Whole;
+  bool keeps_all_ = true;  // whole sweep and whole surface: no root test
 };
 
 }  // namespace toroid

@@ -11,11 +11,15 @@
 //  2. rho(t) is the distance to a line, so rho'' = K / rho^3 with K constant
 //     along the ray; hence h_out'' = 2|d|^2 - 2 R K / rho^3 changes sign at
 //     most twice, at points known in closed form, and h_in is convex. Cut at
-//     those points, each piece is convex or concave: one extremum at most, two
-//     monotone parts, one root each. Newton from the side Fourier's condition
-//     names converges without overshoot; bisection guards it anyway. So no
-//     root is missed, whatever the structure: double roots (tangent rays) are
-//     the extrema that touch zero.
+//     those points, each piece is convex or concave, which is known from
+//     where it lies: a sign change between its ends is one root; equal signs
+//     on the side that allows it are none or two, decided by where the end
+//     tangents cross (their crossing bounds h, or h there has the other sign
+//     and brackets both roots). Each root is polished by Halley's iteration
+//     (h'' and h''' come free with h), guarded by bisection, and stops as soon
+//     as the error predicted from the derivatives is below the tolerance. So
+//     no root is missed, whatever the structure: double roots (tangent rays)
+//     are extrema that touch zero, settled in double-double.
 //  3. The origin is first moved, exactly (double-double), to the ray's point
 //     nearest the centre, so that far cameras lose nothing; t is returned
 //     relative to the original origin.
@@ -24,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace toroid {
 namespace {
@@ -79,6 +84,11 @@ DoubleDouble dd_sqrt(DoubleDouble a) {
   return {hi, corr - (hi - s)};
 }
 
+// A factor's value and first three derivatives at s.
+struct Sample {
+  double s, h, dh, d2h, d3h;
+};
+
 // One factor of the torus quartic along the ray, in the shifted frame
 // p(s) = origin + s * d. sign = -1 gives h_out, +1 gives h_in.
 class TorusFactor {
@@ -101,20 +111,22 @@ class TorusFactor {
   double c() const { return c_; }
   double K() const { return K_; }
 
-  struct Value {
-    double h, dh;
-  };
-
-  // h and h' at s. `side` picks the one-sided derivative of rho where the
-  // ray crosses the axis (rho = 0): -1 from the left, +1 from the right.
-  Value eval(double s, double side = 1.0) const {
+  // h and its derivatives at s. `side` picks the one-sided derivative of rho
+  // where the ray crosses the axis (rho = 0): -1 from the left, +1 from the
+  // right. h'' = 2|d|^2 + sign 2 R K / rho^3 and h''' = -3 (h'' - 2|d|^2) rho'/rho
+  // cost no extra square root.
+  Sample sample(double s, double side = 1.0) const {
     double p[3];
-    for (int i = 0; i < 3; ++i) p[i] = o_hi_[i] + std::fma(s, d_[i], o_lo_[i]);
-    const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
+    for (int i = 0; i < 3; ++i) p[i] = o_hi_[i] + (s * d_[i] + o_lo_[i]);
+    const double rho2 = p[0] * p[0] + p[1] * p[1];
+    const double rho = std::sqrt(rho2);
     const double a = rho + sign_ * R_;  // rho - R, or rho + R
     const double h = (a - r_) * (a + r_) + p[2] * p[2];
-    const double drho = rho > 0 ? (p[0] * d_[0] + p[1] * d_[1]) / rho : side * std::sqrt(c_);
-    return {h, 2.0 * (a * drho + p[2] * d_[2])};
+    if (rho == 0) return {s, h, 2.0 * (a * side * std::sqrt(c_) + p[2] * d_[2]), 2.0 * dd_, 0.0};
+    const double inv_rho = 1.0 / rho;
+    const double drho = (p[0] * d_[0] + p[1] * d_[1]) * inv_rho;
+    const double k = sign_ * 2.0 * R_ * K_ * (inv_rho * inv_rho * inv_rho);
+    return {s, h, 2.0 * (a * drho + p[2] * d_[2]), 2.0 * dd_ + k, -3.0 * k * drho * inv_rho};
   }
 
   // h at s in double-double arithmetic: used where double rounding would
@@ -131,13 +143,6 @@ class TorusFactor {
 
   double minor() const { return r_; }
 
-  double second_derivative(double s) const {
-    double p[3];
-    for (int i = 0; i < 2; ++i) p[i] = o_hi_[i] + std::fma(s, d_[i], o_lo_[i]);
-    const double rho2 = p[0] * p[0] + p[1] * p[1];
-    const double rho3 = rho2 * std::sqrt(rho2);
-    return 2.0 * dd_ + sign_ * 2.0 * R_ * K_ / rho3;
-  }
 
  private:
   double o_hi_[3], o_lo_[3];
@@ -148,11 +153,10 @@ class TorusFactor {
 
 // Root of a monotone function on [lo, hi] whose values at the ends have
 // opposite signs, from the first guess x0 (inside). Newton, guarded by
-// bisection; stops when a step is below `tol`.
+// bisection; `f` returns (value, derivative). Stops when a step is below `tol`.
 template <typename F>
-double solve_monotone(const F& f, double lo, double hi, double f_lo, double x0, double tol) {
+double solve_monotone(const F& f, double lo, double hi, bool lo_negative, double x0, double tol) {
   double x = x0;
-  const bool lo_negative = f_lo < 0;
   for (int it = 0; it < 100; ++it) {
     const auto [v, dv] = f(x);
     if (v == 0) return x;
@@ -171,90 +175,132 @@ double solve_monotone(const F& f, double lo, double hi, double f_lo, double x0, 
 
 // A first guess inside (lo, hi): the Newton step from `from` if it lands
 // inside, else the midpoint.
-double first_guess(double from, double v, double dv, double lo, double hi) {
-  const double x = from - v / dv;
-  return x > lo && x < hi ? x : 0.5 * (lo + hi);
+double first_guess(const Sample& from, double lo, double hi) {
+  const double newton = from.s - from.h / from.dh;
+  const double x = from.s - 2 * from.h * from.dh / (2 * from.dh * from.dh - from.h * from.d2h);
+  if (x > lo && x < hi) return x;
+  return newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
 }
 
-// Collects the roots of one factor, in ascending order, piece by piece.
+// Collects the roots of one factor, in ascending order, piece by piece. On a
+// piece the factor h is convex or concave, known from where the piece lies;
+// with sigma = +1 or -1, g = sigma h is convex there, and the cases are few:
+// g < 0 at both ends: no root; opposite signs: one root; g > 0 at both ends
+// and falling then rising: none or two, decided by the tangents at the ends.
 class RootCollector {
  public:
   RootCollector(const TorusFactor& f, double* out, double length_scale)
       : f_(f), out_(out), tol_root_(2 * kEps * length_scale), tol_extremum_(1e-10 * length_scale) {}
   int count() const { return n_; }
 
-  // Roots of f on the piece [lo, hi), where f is convex (or concave) and so
-  // has at most one extremum. A zero exactly at `hi` counts only if `last`.
-  void piece(double lo, double hi, bool last) {
-    if (lo == hi) {  // a single point: the horn torus's centre
-      if (f_.eval(lo).h == 0) push(lo);
+  // Roots on the piece [a.s, b.s). A zero exactly at b.s counts only if `last`.
+  void piece(const Sample& a, const Sample& b, double sigma, bool last) {
+    if (a.s == b.s) {  // a single point: the horn torus's centre
+      if (a.h == 0) push(a.s);
       return;
     }
-    const auto vlo = f_.eval(lo, +1.0);
-    const auto vhi = f_.eval(hi, -1.0);
-    const bool convex = f_.second_derivative(0.5 * (lo + hi)) > 0;
-    if (vlo.dh * vhi.dh >= 0) {
-      monotone(lo, hi, vlo, vhi, last, convex, false);
-      return;
+    if (a.h == 0) push(a.s);
+    // Signs of g just inside the ends (an end that is an exact zero takes the
+    // sign g has next to it).
+    const double ga = sigma * a.h, gb = sigma * b.h;
+    const bool pos_a = ga != 0 ? ga > 0 : sigma * a.dh > 0;
+    const bool pos_b = gb != 0 ? gb > 0 : sigma * b.dh < 0;
+    if (pos_a != pos_b) {
+      // One root. Newton from the end where g > 0 (Fourier's condition: g
+      // and g'' agree) converges without overshoot.
+      push(root(a, b, pos_a ? a : b, pos_a == (sigma < 0), false));
+    } else if (pos_a && sigma * a.dh < 0 && sigma * b.dh > 0) {
+      two_or_none(a, b, sigma);
     }
-    // One extremum inside. The tangents at the two ends bound f from below
-    // (convex) or above (concave): if that bound keeps its sign, no root.
-    const double x_cross = (vhi.h - vlo.h + vlo.dh * lo - vhi.dh * hi) / (vlo.dh - vhi.dh);
-    const double bound = vlo.h + vlo.dh * (x_cross - lo);
-    if (convex ? (bound > 0 && vlo.h > 0 && vhi.h > 0) : (bound < 0 && vlo.h < 0 && vhi.h < 0)) return;
-    // Solve h' = 0 (h' is monotone here) from where the tangents cross.
-    const double x0 = x_cross > lo && x_cross < hi ? x_cross : 0.5 * (lo + hi);
+    if (b.h == 0 && last) push(b.s);
+  }
+
+ private:
+  // g > 0 at both ends, g' < 0 at a and > 0 at b: one minimum inside. The
+  // tangents at the ends bound g from below; where they cross, either the
+  // bound is positive (no root), or g is negative (a root on each side), or
+  // g is positive and the piece shrinks to the side holding the minimum.
+  void two_or_none(Sample a, Sample b, double sigma) {
+    const double scale = f_.minor() * f_.minor();
+    for (int it = 0; it < 8; ++it) {
+      const double ga = sigma * a.h, gb = sigma * b.h, dga = sigma * a.dh, dgb = sigma * b.dh;
+      double x = (gb - ga + dga * a.s - dgb * b.s) / (dga - dgb);
+      if (!(x > a.s && x < b.s)) x = 0.5 * (a.s + b.s);
+      if (ga + dga * (x - a.s) > 0) return;  // the lower bound stays positive
+      const Sample m = f_.sample(x);
+      const double gm = sigma * m.h;
+      // Where the minimum is within 1e-6 r^2 of zero, the pair is close and
+      // ill-conditioned in double (and g(m) >= the minimum): settle it precisely.
+      if (std::abs(gm) < 1e-6 * scale) break;
+      if (gm < 0) {
+        push(root(a, m, a, sigma < 0, false));
+        push(root(m, b, b, sigma > 0, false));
+        return;
+      }
+      const double dgm = sigma * m.dh;
+      if (dgm == 0) return;  // the minimum, and it is positive
+      (dgm < 0 ? a : b) = m;
+    }
+    near_tangent(a, b, sigma);
+  }
+
+  // The minimum of g is within rounding of zero (a near-tangent ray): find
+  // it by Newton on g' and decide its sign in double-double.
+  void near_tangent(const Sample& a, const Sample& b, double sigma) {
+    double x0 = (b.h - a.h + a.dh * a.s - b.dh * b.s) / (a.dh - b.dh);
+    if (!(x0 > a.s && x0 < b.s)) x0 = 0.5 * (a.s + b.s);
     const double m = solve_monotone(
         [&](double s) {
-          const auto v = f_.eval(s);
-          return std::pair<double, double>{v.dh, f_.second_derivative(s)};
+          const Sample v = f_.sample(s);
+          return std::pair<double, double>{v.dh, v.d2h};
         },
-        lo, hi, vlo.dh, x0, tol_extremum_);
-    double hm = f_.eval(m).h;
-    // Near zero the sign of h at the extremum decides between no root and a
-    // close pair: settle it in double-double.
-    const double scale = f_.minor() * f_.minor() + std::abs(hm);
-    const bool close = std::abs(hm) < 1e-6 * scale;
-    if (close) hm = f_.eval_precise(m);
+        a.s, b.s, a.dh < 0, x0, tol_extremum_);
+    const double hm = f_.eval_precise(m);
     if (hm == 0) {  // tangent: a double root
       push(m);
       push(m);
       return;
     }
-    const TorusFactor::Value vm{hm, 0.0};
-    monotone(lo, m, vlo, vm, false, convex, close);
-    monotone(m, hi, vm, vhi, last, convex, close);
+    if (sigma * hm > 0) return;
+    const Sample sm{m, hm, 0.0, 0.0, 0.0};
+    push(root(a, sm, a, sigma < 0, true));
+    push(root(sm, b, b, sigma > 0, true));
   }
 
- private:
-  // Root on [lo, hi) where f is monotone, if the ends differ in sign.
-  void monotone(double lo, double hi, TorusFactor::Value vlo, TorusFactor::Value vhi, bool last, bool convex,
-                bool precise) {
-    if (vlo.h == 0) {
-      push(lo);
-      return;
+  // The root of h on (a.s, b.s), where h changes sign once; Newton starts
+  // from `start`'s step, `lo_negative` tells the sign of h at a.s.
+  double root(const Sample& a, const Sample& b, const Sample& start, bool lo_negative, bool precise) {
+    double lo = a.s, hi = b.s;
+    double x = first_guess(start, lo, hi);
+    const double tol = tol_root_ * 0.5 + 2 * kEps * std::abs(x);
+    for (int it = 0; it < 100; ++it) {
+      const Sample v = f_.sample(x);
+      if (v.h == 0) break;
+      ((v.h < 0) == lo_negative ? lo : hi) = x;
+      // Halley's step: cubic convergence, with h'' and h''' free from sample().
+      const double step = 2 * v.h * v.dh / (2 * v.dh * v.dh - v.h * v.d2h);
+      double next = x - step;
+      if (!(next > lo && next < hi)) {  // also catches NaN
+        next = 0.5 * (lo + hi);
+      } else if (!precise) {
+        // The error after a Halley step is about |C| step^3, with
+        // C = (h''/2h')^2 - h'''/6h': below the tolerance, no further sample needed.
+        const double q = v.d2h / (2 * v.dh);
+        const double c = std::abs(q * q - v.d3h / (6 * v.dh));
+        if (c * std::abs(step * step * step) <= 0.25 * tol) return next;
+      }
+      const double moved = std::abs(next - x);
+      x = next;
+      if (moved <= tol || hi - lo <= tol) break;
     }
-    if (vhi.h == 0) {
-      if (last) push(hi);
-      return;
-    }
-    if ((vlo.h < 0) == (vhi.h < 0)) return;
-    // Newton converges without overshoot from the end where h and h''
-    // agree in sign (Fourier's condition): start with its step.
-    const bool from_hi = (vhi.h > 0) == convex;
-    const double x0 = from_hi ? first_guess(hi, vhi.h, vhi.dh, lo, hi) : first_guess(lo, vlo.h, vlo.dh, lo, hi);
-    double x = solve_monotone(
-        [&](double s) {
-          const auto v = f_.eval(s);
-          return std::pair<double, double>{v.h, v.dh};
-        },
-        lo, hi, vlo.h, x0, tol_root_ * 0.5 + 2 * kEps * std::abs(x0));
     if (precise) {
-      // A close pair: the same iteration with the value in double-double.
-      x = solve_monotone([&](double s) { return std::pair<double, double>{f_.eval_precise(s), f_.eval(s).dh}; },
-                         lo, hi, vlo.h, x, tol_root_ * 0.5 + 2 * kEps * std::abs(x));
+      // A close pair: the same iteration with the value in double-double,
+      // on the whole bracket (the double iteration's signs may be rounding).
+      x = solve_monotone(
+          [&](double s) { return std::pair<double, double>{f_.eval_precise(s), f_.sample(s).dh}; }, a.s, b.s,
+          lo_negative, x, tol);
     }
-    push(x);
+    return x;
   }
 
   void push(double s) {
@@ -296,34 +342,51 @@ int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3
   if (hi < lo || hi < s_min || lo > s_max) return 0;
 
   // Breakpoints of convexity: the axis crossing when K = 0 (a kink of rho),
-  // else for h_out the two points where rho^3 = R K / |d|^2.
+  // else for h_out the two points s_axis -+ hw where rho^3 = R K / |d|^2;
+  // h_out is concave between them, convex elsewhere; h_in is convex.
   double cuts[4];
+  bool axis_cut[4] = {false, false, false, false};
   int ncut = 0;
   cuts[ncut++] = lo;
+  double concave_lo = 0, concave_hi = 0;  // empty: convex everywhere
   if (f.c() > 0) {
     const double s_axis = -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c();
     if (f.K() == 0) {
-      if (s_axis > lo && s_axis < hi) cuts[ncut++] = s_axis;
+      if (s_axis > lo && s_axis < hi) axis_cut[ncut] = true, cuts[ncut++] = s_axis;
     } else if (f.is_outer()) {
-      const double rho_i = std::cbrt(f.major() * f.K() / f.dd());
-      const double excess = rho_i * rho_i - f.K() / f.c();
-      if (excess > 0) {
-        const double hw = std::sqrt(excess / f.c());
-        if (s_axis - hw > lo && s_axis - hw < hi) cuts[ncut++] = s_axis - hw;
-        if (s_axis + hw > lo && s_axis + hw < hi) cuts[ncut++] = s_axis + hw;
+      // h_out'' < 0 somewhere iff it is at the ray's point nearest the axis,
+      // rho_min^2 = K / c: iff (R K / |d|^2)^2 > (K / c)^3. Only then is the
+      // cube root needed.
+      const double rho_i3 = f.major() * f.K() / f.dd(), rho_min2 = f.K() / f.c();
+      if (rho_i3 * rho_i3 > rho_min2 * rho_min2 * rho_min2) {
+        const double rho_i = std::cbrt(rho_i3);
+        const double hw = std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c());
+        concave_lo = s_axis - hw;
+        concave_hi = s_axis + hw;
+        if (concave_lo > lo && concave_lo < hi) cuts[ncut++] = concave_lo;
+        if (concave_hi > lo && concave_hi < hi) cuts[ncut++] = concave_hi;
       }
     }
   }
   cuts[ncut] = hi;
 
   RootCollector collector(f, out, f.minor() / std::sqrt(f.dd()));
+  Sample start = f.sample(lo, +1.0);
   for (int i = 0; i < ncut; ++i) {
-    if (cuts[i + 1] < s_min || cuts[i] > s_max) continue;
-    collector.piece(cuts[i], cuts[i + 1], i + 1 == ncut);
-    if (first_only) {
-      for (int k = 0; k < collector.count(); ++k)
-        if (out[k] > s_min && out[k] < s_max) return collector.count();
+    // Each cut is sampled once and shared by the pieces on either side (from
+    // each side at an axis crossing, where rho has a kink).
+    const Sample end = f.sample(cuts[i + 1], -1.0);
+    const Sample next_start = axis_cut[i + 1] ? f.sample(cuts[i + 1], +1.0) : end;
+    if (cuts[i + 1] >= s_min && cuts[i] <= s_max) {
+      const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
+      const double sigma = mid > concave_lo && mid < concave_hi ? -1.0 : 1.0;
+      collector.piece(start, end, sigma, i + 1 == ncut);
+      if (first_only) {
+        for (int k = 0; k < collector.count(); ++k)
+          if (out[k] > s_min && out[k] < s_max) return collector.count();
+      }
     }
+    start = next_start;
   }
   return collector.count();
 }
@@ -425,16 +488,33 @@ void torus_normal(double R, double r, const double p[3], double n[3]) {
   }
   // On the spindle's inner part the nearest point of the centre circle is
   // the one across the axis: pick the factor the point satisfies best.
-  double k = 1 - R / rho;
-  if (r > R) {
-    const double a_out = rho - R, a_in = rho + R;
-    const double h_out = std::abs((a_out - r) * (a_out + r) + p[2] * p[2]);
-    const double h_in = std::abs((a_in - r) * (a_in + r) + p[2] * p[2]);
-    if (h_in < h_out) k = 1 + R / rho;
-  }
+  const double k = on_torus_lemon(R, r, p) ? 1 + R / rho : 1 - R / rho;
   n[0] = k * p[0];
   n[1] = k * p[1];
   n[2] = p[2];
+}
+
+bool on_torus_lemon(double R, double r, const double p[3]) {
+  if (r <= R) return false;
+  const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
+  const double a_out = rho - R, a_in = rho + R;
+  const double h_out = std::abs((a_out - r) * (a_out + r) + p[2] * p[2]);
+  const double h_in = std::abs((a_in - r) * (a_in + r) + p[2] * p[2]);
+  return h_in < h_out;
+}
+
+void torus_angles(double R, double r, const double p[3], double* theta, double* phi) {
+  const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
+  // Signed distance from the axis along the direction of the tube centre.
+  const bool lemon = on_torus_lemon(R, r, p);
+  const double rho_s = lemon ? -rho : rho;
+  double th = std::atan2(p[1], p[0]);
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  if (lemon) th += std::numbers::pi;
+  if (th < 0) th += kTwoPi;
+  if (th >= kTwoPi) th -= kTwoPi;  // also catches -tiny + 2 pi rounding to 2 pi
+  *theta = th;
+  *phi = std::atan2(p[2], rho_s - R);
 }
 
 }  // namespace toroid

@@ -38,4 +38,20 @@ void torus_quartic_coefficients(double major, double minor, const double origin[
 // (1 + R/rho). Finite everywhere, the axis points included.
 void torus_normal(double major, double minor, const double p[3], double n[3]);
 
+// Whether a point on the surface of a spindle torus (minor > major) lies on
+// the inner "lemon" sheet (rho + R)^2 + z^2 = r^2, the part of the quartic's
+// surface closer to the far side of the centre circle, rather than on the
+// outer sheet (rho - R)^2 + z^2 = r^2: whichever factor the point satisfies
+// best. Always false for ring and horn tori (minor <= major).
+bool on_torus_lemon(double major, double minor, const double p[3]);
+
+// RenderMan's surface parameters of a point on the surface (RiTorus):
+// p = ((R + r cos phi) cos theta, (R + r cos phi) sin theta, r sin phi).
+// theta in [0, 2 pi) is the angle around the z axis from +x towards +y; phi
+// in [-pi, pi] the angle around the tube, 0 on the outer equator, pi/2 on top
+// (+z), +-pi on the inner equator. On a spindle's lemon R + r cos phi < 0:
+// the point lies across the axis from its tube centre, so theta is
+// atan2(y, x) + pi there. On the axis itself theta is 0.
+void torus_angles(double major, double minor, const double p[3], double* theta, double* phi);
+
 }  // namespace toroid

@@ -15,6 +15,7 @@
 #include "toroid/shapes/cube.h"
 #include "toroid/shapes/group.h"
 #include "toroid/shapes/sphere.h"
+#include "toroid/shapes/torus_intersect.h"
 
 namespace toroid {
 namespace {
@@ -196,6 +197,251 @@ TEST(Torus, AGlassTorusShadesWithoutBlackPixels) {
     const Color c = color_at(w, {point(x, 0, -10), vector(0, 0, 1)});
     EXPECT_TRUE(std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b));
     EXPECT_GT(c.r + c.g + c.b, 0.0) << "black pixel at x = " << x;
+  }
+}
+
+// Partial tori (RenderMan's RiTorus: theta-max, phi-min, phi-max) --------
+
+std::shared_ptr<Torus> partial_torus(double theta_max, double phi_min = -M_PI, double phi_max = M_PI) {
+  auto t = std::make_shared<Torus>(1, 0.25);
+  t->set_sweep({theta_max, phi_min, phi_max});
+  return t;
+}
+
+TEST(Torus, SweepRanges) {
+  EXPECT_TRUE(TorusSweep{}.valid());
+  EXPECT_TRUE(TorusSweep{}.whole());
+  EXPECT_TRUE((TorusSweep{M_PI, M_PI / 2, 3 * M_PI / 2}.valid()));
+  EXPECT_FALSE((TorusSweep{M_PI, M_PI / 2, 3 * M_PI / 2}.whole()));
+  EXPECT_TRUE((TorusSweep{2 * M_PI, 0, 2 * M_PI}.whole()));
+  EXPECT_FALSE((TorusSweep{0, -M_PI, M_PI}.valid()));
+  EXPECT_FALSE((TorusSweep{7, -M_PI, M_PI}.valid()));
+  EXPECT_FALSE((TorusSweep{M_PI, 1, 1}.valid()));
+  EXPECT_FALSE((TorusSweep{M_PI, -4, 4}.valid()));
+  EXPECT_FALSE((TorusSweep{M_PI, -7, 0}.valid()));
+  EXPECT_FALSE((TorusSweep{NAN, -M_PI, M_PI}.valid()));
+}
+
+TEST(Torus, ARayHittingTheRemovedHalfPassesToTheNextRoot) {
+  const auto t = partial_torus(M_PI);  // y >= 0 kept
+  // Along y at x = 1: the whole torus is met at y = -0.75 and y = 0.75.
+  const Intersections xs = intersect_sorted(*t, {point(1, -5, 0), vector(0, 1, 0)});
+  ASSERT_EQ(xs.size(), 1u);
+  EXPECT_DOUBLE_EQ(xs[0].t, 5.75);
+  EXPECT_EQ(xs[0].object, t.get());
+}
+
+TEST(Torus, ARayThroughTheRemovedHalfMisses) {
+  const auto t = partial_torus(M_PI);
+  EXPECT_TRUE(intersect_sorted(*t, {point(-5, -1, 0), vector(1, 0, 0)}).empty());
+  // The same ray at y = +1 meets the kept half twice.
+  EXPECT_EQ(intersect_sorted(*t, {point(-5, 1, 0), vector(1, 0, 0)}).size(), 2u);
+}
+
+TEST(Torus, ARayThroughTheOpenEdgeSeesTheInside) {
+  const auto t = partial_torus(M_PI);
+  const Ray r{point(1, -5, 0), vector(0, 1, 0)};
+  const Intersections xs = intersect_sorted(*t, r);
+  ASSERT_EQ(xs.size(), 1u);
+  const Computations comps = prepare_computations(xs[0], r, xs);
+  EXPECT_APPROX(comps.point, point(1, 0.75, 0));
+  EXPECT_TRUE(comps.inside);
+  // The outward normal (0.8, 0.6, 0), flipped to face the ray.
+  EXPECT_APPROX(comps.normalv, vector(-0.8, -0.6, 0));
+  // Shadow rays start inside the tube.
+  const Tuple& op = comps.over_point;
+  EXPECT_LT(std::pow(std::hypot(op.x, op.y) - 1, 2) + op.z * op.z, 0.25 * 0.25);
+}
+
+TEST(Torus, TheInsideSeenThroughTheOpenEdgeIsLitLikeTheOutside) {
+  // The wall at (1, 0.75, 0), lit from the front of each side, shades alike
+  // (the scenes are mirror images); lit from behind it gets ambient only.
+  auto t = std::make_shared<Torus>(1, 0.25);
+  t->set_sweep({M_PI, -M_PI, M_PI});
+  World inside_lit, outside_lit, inside_dark;
+  inside_lit.lights.push_back({point(1, -10, 0), Color{1, 1, 1}});
+  outside_lit.lights.push_back({point(1, 10, 0), Color{1, 1, 1}});
+  inside_dark.lights.push_back({point(1, 10, 0), Color{1, 1, 1}});
+  for (World* w : {&inside_lit, &outside_lit, &inside_dark}) w->objects.push_back(t);
+  const Ray into_edge{point(1, -5, 0), vector(0, 1, 0)}, onto_wall{point(1, 5, 0), vector(0, -1, 0)};
+  const Color in = color_at(inside_lit, into_edge);
+  const Color out = color_at(outside_lit, onto_wall);
+  const Color dark = color_at(inside_dark, into_edge);
+  EXPECT_APPROX(in, out);
+  const Color ambient = t->material.color * t->material.ambient;
+  EXPECT_GT(in.r, ambient.r + 0.5);
+  EXPECT_APPROX(dark, ambient);
+}
+
+TEST(Torus, APhiSweepKeepsTheTopOfTheTube) {
+  const auto t = partial_torus(2 * M_PI, 0, M_PI);  // phi 0..pi: z >= 0
+  const Intersections down = intersect_sorted(*t, {point(1, 0, 5), vector(0, 0, -1)});
+  ASSERT_EQ(down.size(), 1u);
+  EXPECT_DOUBLE_EQ(down[0].t, 4.75);
+  // From below the bottom is gone: the ray meets the top from inside.
+  const Ray up{point(1, 0, -5), vector(0, 0, 1)};
+  const Intersections xs = intersect_sorted(*t, up);
+  ASSERT_EQ(xs.size(), 1u);
+  EXPECT_DOUBLE_EQ(xs[0].t, 5.25);
+  const Computations comps = prepare_computations(xs[0], up, xs);
+  EXPECT_TRUE(comps.inside);
+  EXPECT_APPROX(comps.normalv, vector(0, 0, -1));
+}
+
+TEST(Torus, APhiSweepAcrossPiKeepsTheInnerHalf) {
+  // phi from pi/2 to 3 pi/2 wraps past pi: the half of the tube facing the axis.
+  const auto t = partial_torus(2 * M_PI, M_PI / 2, 3 * M_PI / 2);
+  const Intersections xs = intersect_sorted(*t, {point(-5, 0, 0), vector(1, 0, 0)});
+  ASSERT_EQ(xs.size(), 2u);
+  EXPECT_DOUBLE_EQ(xs[0].t, 4.25);
+  EXPECT_DOUBLE_EQ(xs[1].t, 5.75);
+  // The same sweep written from -3 pi/2 to -pi/2.
+  const auto u = partial_torus(2 * M_PI, -3 * M_PI / 2, -M_PI / 2);
+  const Intersections ys = intersect_sorted(*u, {point(-5, 0, 0), vector(1, 0, 0)});
+  ASSERT_EQ(ys.size(), 2u);
+  EXPECT_DOUBLE_EQ(ys[0].t, 4.25);
+}
+
+TEST(Torus, ThetaAndPhiOfKnownPoints) {
+  const double p[][3] = {{1.25, 0, 0}, {0, 1, 0.25}, {-0.75, 0, 0}, {0, -1, -0.25}, {1, 0, 0.25}};
+  const double want[][2] = {{0, 0}, {M_PI / 2, M_PI / 2}, {M_PI, M_PI}, {3 * M_PI / 2, -M_PI / 2}, {0, M_PI / 2}};
+  for (int i = 0; i < 5; ++i) {
+    double theta, phi;
+    torus_angles(1, 0.25, p[i], &theta, &phi);
+    EXPECT_NEAR(theta, want[i][0], 1e-15) << "point " << i;
+    EXPECT_NEAR(phi, want[i][1], 1e-15) << "point " << i;
+  }
+}
+
+TEST(Torus, NormalsOfAPartialTorusAreThoseOfTheWholeOne) {
+  const auto t = partial_torus(M_PI / 2, 0, M_PI);
+  EXPECT_APPROX(t->normal_at(point(1.25, 0, 0)), vector(1, 0, 0));
+  EXPECT_APPROX(t->normal_at(point(0, 1, 0.25)), vector(0, 0, 1));
+  const double s = std::sqrt(0.5);
+  EXPECT_APPROX(t->normal_at(point(s * 0.75, s * 0.75, 0)), vector(-s, -s, 0));
+}
+
+TEST(Torus, BoundsShrinkToTheSweptPart) {
+  struct Case {
+    double theta_max, phi_min, phi_max;
+    Tuple min, max;
+  };
+  const double c = std::sqrt(0.5);
+  const Case cases[] = {
+      {M_PI, -M_PI, M_PI, point(-1.25, 0, -0.25), point(1.25, 1.25, 0.25)},
+      {M_PI / 2, -M_PI, M_PI, point(0, 0, -0.25), point(1.25, 1.25, 0.25)},
+      {3 * M_PI / 4, -M_PI, M_PI, point(-1.25 * c, 0, -0.25), point(1.25, 1.25, 0.25)},
+      {3 * M_PI / 2, -M_PI, M_PI, point(-1.25, -1.25, -0.25), point(1.25, 1.25, 0.25)},
+      {2 * M_PI, 0, M_PI, point(-1.25, -1.25, 0), point(1.25, 1.25, 0.25)},
+      {2 * M_PI, -M_PI / 2, 0, point(-1.25, -1.25, -0.25), point(1.25, 1.25, 0)},
+      // The outer half of the tube over an eighth of the turn.
+      {M_PI / 4, -M_PI / 2, M_PI / 2, point(c, 0, -0.25), point(1.25, 1.25 * c, 0.25)},
+      // A thin band around the top: z >= 0.25 sin(pi/3), radius 1 +- 0.125.
+      {2 * M_PI, M_PI / 3, 2 * M_PI / 3, point(-1.125, -1.125, 0.25 * std::sin(M_PI / 3)),
+       point(1.125, 1.125, 0.25)},
+  };
+  for (const Case& k : cases) {
+    SCOPED_TRACE(::testing::Message() << k.theta_max << " " << k.phi_min << " " << k.phi_max);
+    const auto t = partial_torus(k.theta_max, k.phi_min, k.phi_max);
+    const BoundingBox b = t->bounds();
+    EXPECT_APPROX(b.min, k.min);
+    EXPECT_APPROX(b.max, k.max);
+  }
+}
+
+TEST(Torus, EveryKeptPointLiesInTheBoundsAndIsKept) {
+  // Points on the parametric surface inside the sweep are kept and bounded;
+  // points outside it are not kept. Spindle tori (the lemon: R + r cos phi
+  // < 0) included.
+  const double sweeps[][3] = {{M_PI, -M_PI, M_PI}, {1.0, -0.5, 2.5}, {5.0, -5.5, 0.25}, {2 * M_PI, 2.0, 4.0}};
+  for (const double minor : {0.25, 1.0, 1.5}) {
+    for (const auto& sw : sweeps) {
+      Torus t(1, minor);
+      t.set_sweep({sw[0], sw[1], sw[2]});
+      const BoundingBox b = t.bounds();
+      for (int i = 0; i <= 40; ++i)
+        for (int j = 0; j <= 40; ++j) {
+          const double theta = 2 * M_PI * (i + 0.37) / 41, phi = -M_PI + 2 * M_PI * (j + 0.61) / 41;
+          const double rho = 1 + minor * std::cos(phi);
+          const Tuple p = point(rho * std::cos(theta), rho * std::sin(theta), minor * std::sin(phi));
+          if (std::abs(rho) < 1e-9) continue;  // the axis: theta is not defined
+          const bool in_phi = (phi >= sw[1] && phi <= sw[2]) || (phi + 2 * M_PI >= sw[1] && phi + 2 * M_PI <= sw[2]) ||
+                              (phi - 2 * M_PI >= sw[1] && phi - 2 * M_PI <= sw[2]);
+          const bool inside = theta <= sw[0] && in_phi;
+          SCOPED_TRACE(::testing::Message() << "r=" << minor << " theta=" << theta << " phi=" << phi);
+          EXPECT_EQ(t.keeps(p), inside);
+          if (inside) EXPECT_TRUE(b.contains_point(p));
+        }
+    }
+  }
+}
+
+// Spindle and horn tori (r >= R) --------------------------------------------
+
+TEST(Torus, ASpindleTorusAlongItsEquatorMeetsTheOuterSheetAndTheLemon) {
+  // R = 1, r = 1.5: the outer sheet at |x| = 2.5, the lemon at |x| = 0.5.
+  Torus t(1, 1.5);
+  const Ray r{point(-5, 0, 0), vector(1, 0, 0)};
+  const Intersections whole = intersect_sorted(t, r);
+  ASSERT_EQ(whole.size(), 4u);
+  const double want[4] = {2.5, 4.5, 5.5, 7.5};
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(whole[i].t, want[i], 1e-12);
+  EXPECT_APPROX(t.normal_at(point(-0.5, 0, 0)), vector(-1, 0, 0));  // the lemon's outside
+  const double lemon[3] = {-0.5, 0, 0}, outer[3] = {-2.5, 0, 0};
+  EXPECT_TRUE(on_torus_lemon(1, 1.5, lemon));
+  EXPECT_FALSE(on_torus_lemon(1, 1.5, outer));
+
+  t.set_spindle(SpindleSurface::Outer);
+  const Intersections outside = intersect_sorted(t, r);
+  ASSERT_EQ(outside.size(), 2u);
+  EXPECT_NEAR(outside[0].t, 2.5, 1e-12);
+  EXPECT_NEAR(outside[1].t, 7.5, 1e-12);
+}
+
+TEST(Torus, TheLemonHasTheParametricAnglesOfRiTorus) {
+  // On the lemon R + r cos(phi) < 0: (-0.5, 0, 0) is theta = 0, phi = pi.
+  double theta, phi;
+  const double lemon[3] = {-0.5, 0, 0};
+  torus_angles(1, 1.5, lemon, &theta, &phi);
+  EXPECT_NEAR(theta, 0, 1e-15);
+  EXPECT_NEAR(phi, M_PI, 1e-15);
+  // So sweeping theta to pi keeps the lemon's half at x < 0, across the axis
+  // from the kept outer half (y >= 0).
+  Torus t(1, 1.5);
+  t.set_sweep({M_PI, -M_PI, M_PI});
+  const Intersections xs = intersect_sorted(t, {point(-0.3, -5, 0), vector(0, 1, 0)});
+  // Along y at x = -0.3: outer sheet at y = +-sqrt(2.5^2 - 0.09), kept for
+  // y > 0; the lemon at y = +-0.4, kept for y < 0 (theta = atan2 + pi < pi).
+  ASSERT_EQ(xs.size(), 2u);
+  EXPECT_NEAR(xs[0].t, 5 - 0.4, 1e-12);
+  EXPECT_NEAR(xs[1].t, 5 + std::sqrt(2.5 * 2.5 - 0.09), 1e-12);
+}
+
+TEST(Torus, SpindleAndHornToriHaveNoCrackAtTheAxis) {
+  // Rays down the axis and just beside it, and rays crossing the axis at the
+  // apex at several slopes, must all meet the surface near the apex.
+  for (const double minor : {1.0, 1.5, 3.0}) {
+    for (const SpindleSurface mode : {SpindleSurface::Whole, SpindleSurface::Outer}) {
+      Torus t(1, minor);
+      t.set_spindle(mode);
+      const double apex = std::sqrt(minor * minor - 1);  // 0 for the horn
+      for (const double off : {0.0, 1e-12, 1e-9, 1e-6, 1e-3}) {
+        const Intersections xs = intersect_sorted(t, {point(off, 0, 10), vector(0, 0, -1)});
+        SCOPED_TRACE(::testing::Message() << "r=" << minor << " offset=" << off);
+        ASSERT_GE(xs.size(), 2u);
+        // The outer sheet at rho = off: z = sqrt(r^2 - (off - R)^2).
+        const double z = std::sqrt(minor * minor - (off - 1) * (off - 1));
+        EXPECT_NEAR(xs[0].t, 10 - z, 1e-6);
+        EXPECT_NEAR(xs.back().t, 10 + z, 1e-6);
+      }
+      for (const double slope : {0.01, 0.3, 1.0, 5.0}) {
+        const Tuple target = point(0, 0, apex);
+        const Tuple d = normalize(vector(1, 0.3, slope));
+        const Intersections xs = intersect_sorted(t, {target - d * 10, d});
+        SCOPED_TRACE(::testing::Message() << "r=" << minor << " slope=" << slope);
+        ASSERT_GE(xs.size(), 2u);
+      }
+    }
   }
 }
 
