@@ -226,7 +226,8 @@ class Loader {
   // A file named in the scene: relative names are relative to the scene's directory.
   std::filesystem::path resolve(const std::string& file) const {
     const std::filesystem::path p(file);
-    return (p.is_absolute() ? p : base_dir_ / p).lexically_normal();
+    // Not lexically_normal(): "a/../b" differs from "b" when a is a symlink.
+    return p.is_absolute() || base_dir_ == "." ? p : base_dir_ / p;
   }
 
   const Define& lookup_define(const YAML::Node& name_node, const std::string& what) const {
