@@ -1,6 +1,7 @@
 #include "toroid/render/world.h"
 
 #include <cmath>
+#include <limits>
 
 #include "toroid/math/transform.h"
 #include "toroid/render/lighting.h"
@@ -29,6 +30,25 @@ void intersect_world(const World& world, const Ray& ray, Intersections& xs) {
   sort_intersections(xs);
 }
 
+void index_objects(World& world) { world.index = ShapeBvh(world.objects); }
+
+namespace {
+bool indexed(const World& world) { return !world.objects.empty() && world.index.size() == world.objects.size(); }
+}  // namespace
+
+bool intersect_nearest(const World& world, const Ray& ray, Intersection& hit) {
+  constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+  if (indexed(world)) return world.index.intersect_nearest(ray, kNoLimit, hit);
+  bool found = false;
+  double t_max = kNoLimit;
+  for (const auto& object : world.objects)
+    if (object->intersect_nearest(ray, t_max, hit)) {
+      found = true;
+      t_max = hit.t;
+    }
+  return found;
+}
+
 std::uint64_t& rays_traced_on_this_thread() {
   thread_local std::uint64_t count = 0;
   return count;
@@ -43,16 +63,10 @@ bool is_shadowed(const World& world, const Tuple& light_position, const Tuple& p
   const Tuple to_light = light_position - point;
   const double distance = magnitude(to_light);
   const Ray ray{point, to_light / distance};
-  // Separate from color_at's buffer; the caller's state stays untouched.
-  thread_local Intersections xs;
-  for (const auto& object : world.objects) {
-    if (!object->casts_shadow) continue;
-    xs.clear();
-    object->intersect(ray, xs);
-    // Any blocker between the point and the light will do: no sort needed.
-    for (const Intersection& x : xs)
-      if (x.t >= 0 && x.t < distance && x.object->casts_shadow) return true;
-  }
+  // Any blocker between the point and the light will do.
+  if (indexed(world)) return world.index.blocks(ray, distance);
+  for (const auto& object : world.objects)
+    if (object->blocks(ray, distance)) return true;
   return false;
 }
 
@@ -93,11 +107,22 @@ Color shade_hit(const World& world, const Computations& comps, int remaining) {
 
 Color color_at(const World& world, const Ray& ray, int remaining) {
   ++rays_traced_on_this_thread();
-  // One buffer per thread, reused across rays. Recursion is safe: the
-  // intersections are consumed by prepare_computations before shade_hit
-  // can cast (and so overwrite them with) the next ray.
+  if (indexed(world) && !world.index.any_transparent()) {
+    // Nothing refracts, so n1 and n2 go unread: the nearest hit is enough.
+    Intersection nearest;
+    if (!intersect_nearest(world, ray, nearest)) return kBlack;
+    return shade_hit(world, prepare_computations(nearest, ray), remaining);
+  }
+  // Refraction needs n1 and n2, from every intersection along the ray up
+  // to the hit (the containers algorithm). One buffer per thread, reused
+  // across rays. Recursion is safe: the intersections are consumed by
+  // prepare_computations before shade_hit can cast (and so overwrite them
+  // with) the next ray.
   thread_local Intersections xs;
-  intersect_world(world, ray, xs);
+  if (indexed(world))
+    world.index.intersect_up_to_hit(ray, xs);
+  else
+    intersect_world(world, ray, xs);
   const Intersection* h = hit(xs);
   if (h == nullptr) return kBlack;
   const Computations comps = prepare_computations(*h, ray, xs);

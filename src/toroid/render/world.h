@@ -11,6 +11,7 @@
 #include "toroid/render/intersection.h"
 #include "toroid/render/light.h"
 #include "toroid/render/ray.h"
+#include "toroid/shapes/shape_bvh.h"
 
 namespace toroid {
 
@@ -21,7 +22,14 @@ struct World {
   // Every light's contribution adds up.
   std::vector<PointLight> lights;
   std::vector<AreaLight> area_lights;
+  // Optional, built by index_objects: the renderer's queries use it while
+  // it covers as many objects as `objects` holds, else test every object.
+  ShapeBvh index;
 };
+
+// Builds world.index over the objects as they are now. Call it again after
+// changing the objects or their transforms (the scene loader calls it).
+void index_objects(World& world);
 
 // How many bounces color_at follows by default (reflection and refraction).
 inline constexpr int kDefaultRemaining = 5;
@@ -35,6 +43,10 @@ World default_world();
 // world's objects, sorted by t. Reuse one buffer across rays to avoid
 // allocating.
 void intersect_world(const World& world, const Ray& ray, Intersections& xs);
+
+// The visible intersection along `ray` (what hit() picks from
+// intersect_world's list, up to ties), without building the list.
+bool intersect_nearest(const World& world, const Ray& ray, Intersection& hit);
 
 // Whether an object that casts shadows lies between `point` and the light.
 bool is_shadowed(const World& world, const Tuple& point, const PointLight& light);

@@ -2,13 +2,14 @@
 // roots it finds in ascending order and returns their count.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
 namespace toroid {
 
 // The quartic solvers that can be chosen by name (CLI --solver, YAML, API).
-enum class QuarticSolver {
+enum class QuarticSolver : std::uint8_t {
   Default,   // robust: exact distance function, monotone intervals (see torus.h)
   Ferrari,   // textbook Ferrari with the dominant root of the resolvent cubic
   Tianheng,  // the seed paper's closed form with its full case table

@@ -835,6 +835,7 @@ Scene Loader::load(const YAML::Node& root) {
   if (!cam) fail(root, "the scene has no camera (add one with '- add: camera')");
   Camera camera(cam->width, cam->height, cam->fov);
   camera.set_transform(view_transform(cam->from, cam->to, cam->up));
+  index_objects(world);
   return Scene{std::move(world), camera};
 }
 

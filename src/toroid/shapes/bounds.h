@@ -28,10 +28,10 @@ struct BoundingBox {
   bool contains_point(const Tuple& p) const;
   bool contains_box(const BoundingBox& other) const;
 
-  // Whether the ray meets the box at some t >= 0 (slab test). Handles
-  // infinite extents and zero direction components without NaN trouble: a
-  // slab that a parallel ray grazes exactly is treated as crossed.
-  inline bool intersects(const Ray& r) const;
+  // Whether the ray meets the box at some 0 <= t <= t_max (slab test).
+  // Handles infinite extents and zero direction components without NaN
+  // trouble: a slab that a parallel ray grazes exactly is treated as crossed.
+  inline bool intersects(const Ray& r, double t_max = kInf) const;
 
   // The bonus chapter's split: halves the box across its largest extent
   // (ties prefer x, then y); returns {left, right}.
@@ -56,13 +56,13 @@ inline void clip_slab(double lo, double hi, double origin, double inv, double& t
 }
 }  // namespace detail
 
-inline bool BoundingBox::intersects(const Ray& r) const {
+inline bool BoundingBox::intersects(const Ray& r, double t_max) const {
   double tmin = -kInf;
   double tmax = kInf;
   detail::clip_slab(min.x, max.x, r.origin.x, 1.0 / r.direction.x, tmin, tmax);
   detail::clip_slab(min.y, max.y, r.origin.y, 1.0 / r.direction.y, tmin, tmax);
   detail::clip_slab(min.z, max.z, r.origin.z, 1.0 / r.direction.z, tmin, tmax);
-  return tmin <= tmax && tmax >= 0;
+  return tmin <= tmax && tmax >= 0 && tmin <= t_max;
 }
 
 }  // namespace toroid

@@ -13,7 +13,8 @@ BoundingBox Cone::bounds() const {
   return {point(-limit, minimum, -limit), point(limit, maximum, limit)};
 }
 
-void Cone::local_intersect(const Ray& ray, Intersections& xs) const {
+int Cone::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
+  int n = 0;
   const Tuple& o = ray.origin;
   const Tuple& d = ray.direction;
   const double a = d.x * d.x - d.y * d.y + d.z * d.z;
@@ -21,7 +22,7 @@ void Cone::local_intersect(const Ray& ray, Intersections& xs) const {
   const double c = o.x * o.x - o.y * o.y + o.z * o.z;
   auto add_if_within = [&](double t) {
     const double y = o.y + t * d.y;
-    if (minimum < y && y < maximum) xs.push_back({t, this});
+    if (minimum < y && y < maximum) hits[n++] = {t, this};
   };
   if (std::abs(a) < kEpsilon) {
     // Parallel to one half: a single intersection with the other half.
@@ -37,11 +38,12 @@ void Cone::local_intersect(const Ray& ray, Intersections& xs) const {
       add_if_within(t1);
     }
   }
-  if (!closed || std::abs(d.y) < kEpsilon) return;
+  if (!closed || std::abs(d.y) < kEpsilon) return n;
   const double tlo = (minimum - o.y) / d.y;
-  if (detail::within_cap(ray, tlo, std::abs(minimum))) xs.push_back({tlo, this});
+  if (detail::within_cap(ray, tlo, std::abs(minimum))) hits[n++] = {tlo, this};
   const double thi = (maximum - o.y) / d.y;
-  if (detail::within_cap(ray, thi, std::abs(maximum))) xs.push_back({thi, this});
+  if (detail::within_cap(ray, thi, std::abs(maximum))) hits[n++] = {thi, this};
+  return n;
 }
 
 Tuple Cone::local_normal_at(const Tuple& p, const Intersection&) const {

@@ -2,11 +2,11 @@
 // optionally truncated to minimum < y < maximum and closed with caps.
 #pragma once
 
-#include "toroid/shapes/shape.h"
+#include "toroid/shapes/primitive.h"
 
 namespace toroid {
 
-class Cone : public Shape {
+class Cone : public Primitive<Cone> {
  public:
   // Changing these after the cone joins a group: call bounds_changed().
   double minimum = -BoundingBox::kInf;
@@ -14,7 +14,7 @@ class Cone : public Shape {
   bool closed = false;
 
   BoundingBox bounds() const override;
-  void local_intersect(const Ray& ray, Intersections& xs) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };
 

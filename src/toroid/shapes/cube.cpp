@@ -4,16 +4,17 @@
 
 namespace toroid {
 
-void Cube::local_intersect(const Ray& ray, Intersections& xs) const {
+int Cube::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   // The cube is its own bounding box: the same slab test, keeping both ends.
   double tmin = -BoundingBox::kInf;
   double tmax = BoundingBox::kInf;
   detail::clip_slab(-1, 1, ray.origin.x, 1.0 / ray.direction.x, tmin, tmax);
   detail::clip_slab(-1, 1, ray.origin.y, 1.0 / ray.direction.y, tmin, tmax);
   detail::clip_slab(-1, 1, ray.origin.z, 1.0 / ray.direction.z, tmin, tmax);
-  if (tmin > tmax || std::isinf(tmin) || std::isinf(tmax)) return;
-  xs.push_back({tmin, this});
-  xs.push_back({tmax, this});
+  if (tmin > tmax || std::isinf(tmin) || std::isinf(tmax)) return 0;
+  hits[0] = {tmin, this};
+  hits[1] = {tmax, this};
+  return 2;
 }
 
 Tuple Cube::local_normal_at(const Tuple& p, const Intersection&) const {

@@ -2,11 +2,11 @@
 // truncated to minimum < y < maximum and closed with caps.
 #pragma once
 
-#include "toroid/shapes/shape.h"
+#include "toroid/shapes/primitive.h"
 
 namespace toroid {
 
-class Cylinder : public Shape {
+class Cylinder : public Primitive<Cylinder> {
  public:
   // Changing these after the cylinder joins a group: call bounds_changed().
   double minimum = -BoundingBox::kInf;
@@ -14,7 +14,7 @@ class Cylinder : public Shape {
   bool closed = false;
 
   BoundingBox bounds() const override { return {point(-1, minimum, -1), point(1, maximum, 1)}; }
-  void local_intersect(const Ray& ray, Intersections& xs) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };
 

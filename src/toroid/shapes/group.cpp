@@ -26,6 +26,24 @@ void Group::local_intersect(const Ray& ray, Intersections& xs) const {
   for (const auto& child : children_) child->intersect(ray, xs);
 }
 
+bool Group::local_intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const {
+  if (!bounds_.intersects(ray, t_max)) return false;
+  bool found = false;
+  for (const auto& child : children_)
+    if (child->intersect_nearest(ray, t_max, hit)) {
+      found = true;
+      t_max = hit.t;
+    }
+  return found;
+}
+
+bool Group::local_blocks(const Ray& ray, double t_max) const {
+  if (!bounds_.intersects(ray, t_max)) return false;
+  for (const auto& child : children_)
+    if (child->blocks(ray, t_max)) return true;
+  return false;
+}
+
 Tuple Group::local_normal_at(const Tuple&, const Intersection&) const {
   throw std::logic_error("local_normal_at called on a group: groups have no surface");
 }

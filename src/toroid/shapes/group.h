@@ -29,6 +29,9 @@ class Group : public Shape {
   // Tests the bounding box first, then appends every child's intersections
   // to xs, unsorted.
   void local_intersect(const Ray& ray, Intersections& xs) const override;
+  // Skip the box when it starts beyond t_max; each hit shortens t_max.
+  bool local_intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const override;
+  bool local_blocks(const Ray& ray, double t_max) const override;
   // Groups have no surface of their own: hits always name a primitive.
   // Throws std::logic_error.
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;

@@ -3,9 +3,7 @@
 namespace toroid {
 
 void Shape::set_transform(const Matrix4& m) {
-  transform_ = m;
-  inverse_ = inverse(m);
-  inverse_transpose_ = transpose(inverse_);
+  inverse_ = Affine::from(inverse(m));
   bounds_changed();
 }
 
@@ -15,9 +13,7 @@ Tuple Shape::world_to_object(const Tuple& world_point) const {
 }
 
 Tuple Shape::normal_to_world(const Tuple& object_normal) const {
-  Tuple n = inverse_transpose_ * object_normal;
-  n.w = 0;
-  n = normalize(n);
+  const Tuple n = normalize(inverse_.transpose_times(object_normal));
   return parent ? parent->normal_to_world(n) : n;
 }
 
@@ -25,6 +21,36 @@ Tuple Shape::normal_at(const Tuple& world_point, const Intersection& hit) const 
   return normal_to_world(local_normal_at(world_to_object(world_point), hit));
 }
 
-BoundingBox Shape::parent_space_bounds() const { return ::toroid::transform(bounds(), transform_); }
+BoundingBox Shape::parent_space_bounds() const { return ::toroid::transform(bounds(), transform()); }
+
+namespace {
+// local_intersect's list for the default queries. One per thread; the
+// defaults never re-enter each other while it is in use (local_intersect
+// only calls intersect below it).
+Intersections& scratch() {
+  thread_local Intersections xs;
+  xs.clear();
+  return xs;
+}
+}  // namespace
+
+bool Shape::local_intersect_nearest(const Ray& local_ray, double t_max, Intersection& hit) const {
+  Intersections& xs = scratch();
+  local_intersect(local_ray, xs);
+  const Intersection* best = nullptr;
+  for (const Intersection& x : xs)
+    if (x.t >= 0 && x.t < t_max && (best == nullptr || x.t < best->t)) best = &x;
+  if (best == nullptr) return false;
+  hit = *best;
+  return true;
+}
+
+bool Shape::local_blocks(const Ray& local_ray, double t_max) const {
+  Intersections& xs = scratch();
+  local_intersect(local_ray, xs);
+  for (const Intersection& x : xs)
+    if (x.t >= 0 && x.t < t_max && x.object->casts_shadow) return true;
+  return false;
+}
 
 }  // namespace toroid

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 
+#include "toroid/math/affine.h"
 #include "toroid/math/matrix.h"
 #include "toroid/render/intersection.h"
 #include "toroid/render/material.h"
@@ -15,24 +16,46 @@ namespace toroid {
 class Group;
 
 class Shape {
+  // The object-to-parent transform's inverse, first: the data members are
+  // ordered so that the one-byte flag comes last, and a subclass's small
+  // field fits in the tail padding (a scene may hold many thousands of
+  // shapes; see docs/performance.md).
+  Affine inverse_;
+
  public:
   Shape() = default;
   Shape(const Shape&) = delete;
   Shape& operator=(const Shape&) = delete;
   virtual ~Shape() = default;
 
-  const Matrix4& transform() const { return transform_; }
-  const Matrix4& inverse_transform() const { return inverse_; }
-  // Precondition: is_invertible(m). Caches the inverse and its transpose.
+  // Only the inverse is stored, in affine form (memory: a scene may hold
+  // many thousands of shapes); transform() recomputes the forward matrix
+  // from it, for setup-time uses (bounds).
+  Matrix4 transform() const { return inverse(inverse_.to_matrix()); }
+  Matrix4 inverse_transform() const { return inverse_.to_matrix(); }
+  // Precondition: is_invertible(m) and m is affine (bottom row 0 0 0 1).
   void set_transform(const Matrix4& m);
 
   Material material;
+  const Shape* parent = nullptr;
   // Shapes with casts_shadow == false are skipped by shadow rays (YAML `shadow: false`).
   bool casts_shadow = true;
-  const Shape* parent = nullptr;
 
   // Appends the intersections of a ray given in the parent's space.
-  void intersect(const Ray& ray, Intersections& xs) const { local_intersect(::toroid::transform(ray, inverse_), xs); }
+  void intersect(const Ray& ray, Intersections& xs) const { local_intersect(to_object_space(ray), xs); }
+
+  // The renderer's queries, for a ray in the parent's space. The nearest
+  // intersection with 0 <= t < t_max: when there is one, sets `hit` and
+  // returns true (the same one that hit() picks from intersect's list, up to
+  // ties).
+  bool intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const {
+    return local_intersect_nearest(to_object_space(ray), t_max, hit);
+  }
+  // Whether a shape that casts shadows meets the ray at some 0 <= t < t_max
+  // (shadow rays: any blocker will do).
+  bool blocks(const Ray& ray, double t_max) const {
+    return casts_shadow && local_blocks(to_object_space(ray), t_max);
+  }
 
   // Normal at a world-space point; `hit` carries u/v for smooth triangles.
   Tuple normal_at(const Tuple& world_point, const Intersection& hit = {}) const;
@@ -62,15 +85,18 @@ class Shape {
 
   virtual void local_intersect(const Ray& local_ray, Intersections& xs) const = 0;
   virtual Tuple local_normal_at(const Tuple& local_point, const Intersection& hit) const = 0;
+  // intersect_nearest and blocks in object space. The defaults filter
+  // local_intersect's list; shapes override them where they can stop early
+  // (groups prune their boxes, the torus asks for its nearest root only).
+  virtual bool local_intersect_nearest(const Ray& local_ray, double t_max, Intersection& hit) const;
+  virtual bool local_blocks(const Ray& local_ray, double t_max) const;
 
  protected:
   // Told by a child (see bounds_changed) that its box may have moved.
   virtual void child_bounds_changed() const {}
 
  private:
-  Matrix4 transform_ = Matrix4::identity();
-  Matrix4 inverse_ = Matrix4::identity();
-  Matrix4 inverse_transpose_ = Matrix4::identity();
+  Ray to_object_space(const Ray& ray) const { return {inverse_ * ray.origin, inverse_ * ray.direction}; }
 };
 
 }  // namespace toroid

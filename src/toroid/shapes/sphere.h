@@ -3,14 +3,14 @@
 
 #include <memory>
 
-#include "toroid/shapes/shape.h"
+#include "toroid/shapes/primitive.h"
 
 namespace toroid {
 
-class Sphere : public Shape {
+class Sphere : public Primitive<Sphere> {
  public:
   BoundingBox bounds() const override { return {point(-1, -1, -1), point(1, 1, 1)}; }
-  void local_intersect(const Ray& ray, Intersections& xs) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 #include "toroid/shapes/torus_intersect.h"
 
@@ -42,14 +43,14 @@ bool TorusSweep::valid() const {
 
 void Torus::set_sweep(const TorusSweep& sweep) {
   assert(sweep.valid());
-  sweep_ = sweep;
-  keeps_all_ = sweep_.whole() && spindle_ == SpindleSurface::Whole;
+  partial_ = sweep.whole() ? nullptr : std::make_unique<const TorusSweep>(sweep);
+  keeps_all_ = sweep.whole() && spindle_ == SpindleSurface::Whole;
   bounds_changed();
 }
 
 void Torus::set_spindle(SpindleSurface s) {
   spindle_ = s;
-  keeps_all_ = sweep_.whole() && spindle_ == SpindleSurface::Whole;
+  keeps_all_ = sweep().whole() && spindle_ == SpindleSurface::Whole;
   bounds_changed();
 }
 
@@ -57,11 +58,12 @@ bool Torus::keeps(const Tuple& surface_point) const {
   if (keeps_all_) return true;
   const double p[3] = {surface_point.x, surface_point.y, surface_point.z};
   if (spindle_ == SpindleSurface::Outer && on_torus_lemon(major_, minor_, p)) return false;
-  if (sweep_.whole()) return true;
+  if (!partial_) return true;
+  const TorusSweep& s = *partial_;
   double theta, phi;
   torus_angles(major_, minor_, p, &theta, &phi);
-  if (theta > sweep_.theta_max) return false;
-  const auto in = [&](double a) { return a >= sweep_.phi_min && a <= sweep_.phi_max; };
+  if (theta > s.theta_max) return false;
+  const auto in = [&](double a) { return a >= s.phi_min && a <= s.phi_max; };
   return in(phi) || in(phi + TorusSweep::kTwoPi) || in(phi - TorusSweep::kTwoPi);
 }
 
@@ -70,8 +72,9 @@ BoundingBox Torus::bounds() const {
   // (negative on a spindle's lemon) and z = r sin phi: x and y are bilinear
   // in rho_s and (cos theta, sin theta), so the corners of their ranges bound
   // them exactly; z depends on phi alone.
-  const TrigRange phi = trig_range(sweep_.phi_min, sweep_.phi_max);
-  const TrigRange theta = trig_range(0, sweep_.theta_max);
+  const TorusSweep& s = sweep();
+  const TrigRange phi = trig_range(s.phi_min, s.phi_max);
+  const TrigRange theta = trig_range(0, s.theta_max);
   double rho_lo = major_ + minor_ * phi.cos_min, rho_hi = major_ + minor_ * phi.cos_max;
   if (spindle_ == SpindleSurface::Outer) rho_lo = std::max(rho_lo, 0.0), rho_hi = std::max(rho_hi, 0.0);
   const auto span = [&](double lo, double hi) {
@@ -83,13 +86,44 @@ BoundingBox Torus::bounds() const {
   return {point(x_lo, y_lo, minor_ * phi.sin_min), point(x_hi, y_hi, minor_ * phi.sin_max)};
 }
 
-void Torus::local_intersect(const Ray& ray, Intersections& xs) const {
+AnnularCylinder Torus::washer() const { return {major_ - minor_, major_ + minor_, minor_}; }
+
+int Torus::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (!washer().may_meet(ray.origin, ray.direction, -kInf, kInf)) return 0;
   const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
   const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
   double t[4];
   const int n = intersect_torus(major_, minor_, o, d, t, solver_);
+  int kept = 0;
   for (int i = 0; i < n; ++i)
-    if (keeps_all_ || keeps(ray.position(t[i]))) xs.push_back({t[i], this});
+    if (keeps_all_ || keeps(ray.position(t[i]))) hits[kept++] = {t[i], this};
+  return kept;
+}
+
+bool Torus::nearest_root(const Ray& ray, double t_max, double& t) const {
+  // The query's interval is open: just below 0 admits t = 0, as hit() does.
+  constexpr double kBelowZero = -std::numeric_limits<double>::denorm_min();
+  // Most rays that reach a torus's box miss the torus, or meet it beyond
+  // t_max (a nearer hit, the light): the washer turns them away cheaply.
+  if (!washer().may_meet(ray.origin, ray.direction, kBelowZero, t_max)) return false;
+  const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+  const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+  return intersect_torus_nearest(major_, minor_, o, d, kBelowZero, t_max, &t, solver_);
+}
+
+bool Torus::local_intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const {
+  if (!keeps_all_) return Primitive<Torus>::local_intersect_nearest(ray, t_max, hit);
+  double t;
+  if (!nearest_root(ray, t_max, t)) return false;
+  hit = {t, this};
+  return true;
+}
+
+bool Torus::local_blocks(const Ray& ray, double t_max) const {
+  if (!keeps_all_) return Primitive<Torus>::local_blocks(ray, t_max);
+  double t;
+  return nearest_root(ray, t_max, t);
 }
 
 Tuple Torus::local_normal_at(const Tuple& p, const Intersection&) const {

@@ -5,16 +5,19 @@
 // of a spindle torus's surface.
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <numbers>
 
 #include "toroid/roots/quartic.h"
-#include "toroid/shapes/shape.h"
+#include "toroid/shapes/annular_cylinder.h"
+#include "toroid/shapes/primitive.h"
 
 namespace toroid {
 
 // Which part of a spindle torus's (minor > major) quartic surface is kept:
 // all of it, or the outer sheet only (the inner "lemon" removed).
-enum class SpindleSurface { Whole, Outer };
+enum class SpindleSurface : std::uint8_t { Whole, Outer };
 
 // The swept part of the surface, in the angles of torus_angles(): theta
 // around the z axis from +x towards +y, phi around the tube from the outer
@@ -32,7 +35,7 @@ struct TorusSweep {
   bool whole() const { return theta_max >= kTwoPi && phi_max - phi_min >= kTwoPi; }
 };
 
-class Torus : public Shape {
+class Torus : public Primitive<Torus> {
  public:
   // Precondition: major > 0, minor > 0, both finite (the scene loader checks).
   Torus(double major = 1.0, double minor = 0.25) : major_(major), minor_(minor) {}
@@ -44,7 +47,7 @@ class Torus : public Shape {
 
   // Precondition: sweep.valid().
   void set_sweep(const TorusSweep& sweep);
-  const TorusSweep& sweep() const { return sweep_; }
+  const TorusSweep& sweep() const { return partial_ ? *partial_ : kWholeSweep; }
   void set_spindle(SpindleSurface s);
   SpindleSurface spindle() const { return spindle_; }
 
@@ -54,18 +57,31 @@ class Torus : public Shape {
 
   // The box of the kept part (exact for the swept angles' ranges).
   BoundingBox bounds() const override;
-  // Appends every kept root (sorted), so CSG and refraction see the ray leave
-  // and re-enter the same torus. A partial torus is an open surface: a ray
+  // Every kept root (sorted), so CSG and refraction see the ray leave and
+  // re-enter the same torus. A partial torus is an open surface: a ray
   // through an open edge meets its inside.
-  void local_intersect(const Ray& ray, Intersections& xs) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
+  // The solver's nearest-root query (no list, early exit) when every root is
+  // kept; a partial torus filters find_hits instead.
+  bool local_intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const override;
+  bool local_blocks(const Ray& ray, double t_max) const override;
 
  private:
-  double major_, minor_;
+  // The bounding washer: the solver runs only for rays that may meet it.
+  AnnularCylinder washer() const;
+  bool nearest_root(const Ray& ray, double t_max, double& t) const;
+
+  // The one-byte fields first: they fit in the tail padding of Shape
+  // (sizeof matters, scenes hold thousands of tori).
   QuarticSolver solver_ = QuarticSolver::Default;
-  TorusSweep sweep_;
   SpindleSurface spindle_ = SpindleSurface::Whole;
   bool keeps_all_ = true;  // whole sweep and whole surface: no root test
+  double major_, minor_;
+  // The sweep, held apart when it is partial (rare): a whole torus stays at
+  // 240 bytes, 256 with make_shared's control block (docs/performance.md).
+  std::unique_ptr<const TorusSweep> partial_;
+  static constexpr TorusSweep kWholeSweep{};
 };
 
 }  // namespace toroid

@@ -27,20 +27,21 @@ BoundingBox Triangle::bounds() const {
   return b;
 }
 
-void Triangle::local_intersect(const Ray& ray, Intersections& xs) const {
+int Triangle::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   const Tuple dir_cross_e2 = cross(ray.direction, e2_);
   const double det = dot(e1_, dir_cross_e2);
   const Tuple& d = ray.direction;
   const double dmax = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
-  if (!(std::abs(det) > kParallelCosine * area2_ * dmax)) return;  // parallel or degenerate
+  if (!(std::abs(det) > kParallelCosine * area2_ * dmax)) return 0;  // parallel or degenerate
   const double f = 1.0 / det;
   const Tuple p1_to_origin = ray.origin - p1_;
   const double u = f * dot(p1_to_origin, dir_cross_e2);
-  if (u < 0 || u > 1) return;
+  if (u < 0 || u > 1) return 0;
   const Tuple origin_cross_e1 = cross(p1_to_origin, e1_);
   const double v = f * dot(d, origin_cross_e1);
-  if (v < 0 || u + v > 1) return;
-  xs.push_back({f * dot(e2_, origin_cross_e1), this, u, v});
+  if (v < 0 || u + v > 1) return 0;
+  hits[0] = {f * dot(e2_, origin_cross_e1), this, u, v};
+  return 1;
 }
 
 Tuple Triangle::local_normal_at(const Tuple&, const Intersection&) const { return normal_; }

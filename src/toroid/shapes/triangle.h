@@ -1,11 +1,11 @@
 // Flat triangle (RTC chapter 15), intersected with Moller-Trumbore.
 #pragma once
 
-#include "toroid/shapes/shape.h"
+#include "toroid/shapes/primitive.h"
 
 namespace toroid {
 
-class Triangle : public Shape {
+class Triangle : public Primitive<Triangle> {
  public:
   Triangle(const Tuple& p1, const Tuple& p2, const Tuple& p3);
 
@@ -18,7 +18,7 @@ class Triangle : public Shape {
 
   BoundingBox bounds() const override;
   // Records the barycentric u (weight of p2) and v (weight of p3) of the hit.
-  void local_intersect(const Ray& ray, Intersections& xs) const override;
+  int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 
  private:

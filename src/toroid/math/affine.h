@@ -1,0 +1,45 @@
+// An affine 4x4 matrix stored as its top three rows (the bottom row is
+// always 0 0 0 1): 96 bytes instead of 128, and a multiply that skips the
+// row and the terms that are known to be 0 or 1. Products are summed in the
+// same order as Matrix4 * Tuple, so results are bit-identical to it.
+#pragma once
+
+#include "toroid/math/matrix.h"
+
+namespace toroid {
+
+struct Affine {
+  double m[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+
+  // Precondition: the bottom row of a is 0 0 0 1 (every RTC transform is).
+  static Affine from(const Matrix4& a) {
+    Affine r;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 4; ++j) r.m[i][j] = a.m[i][j];
+    return r;
+  }
+
+  Matrix4 to_matrix() const {
+    Matrix4 r = Matrix4::identity();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 4; ++j) r.m[i][j] = m[i][j];
+    return r;
+  }
+
+  // Points (w = 1) get the translation, vectors (w = 0) do not; w is kept.
+  constexpr Tuple operator*(const Tuple& t) const {
+    return {m[0][0] * t.x + m[0][1] * t.y + m[0][2] * t.z + m[0][3] * t.w,
+            m[1][0] * t.x + m[1][1] * t.y + m[1][2] * t.z + m[1][3] * t.w,
+            m[2][0] * t.x + m[2][1] * t.y + m[2][2] * t.z + m[2][3] * t.w, t.w};
+  }
+
+  // The transpose of the linear (3x3) part times the xyz of v, as a vector:
+  // how normals go from object to world space when this is the inverse
+  // transform.
+  constexpr Tuple transpose_times(const Tuple& v) const {
+    return vector(m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z, m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
+                  m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z);
+  }
+};
+
+}  // namespace toroid

@@ -1,0 +1,71 @@
+// The world's index (index_objects) changes how rays find objects, never
+// what they see.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "toroid/math/transform.h"
+#include "toroid/render/camera.h"
+#include "toroid/render/world.h"
+#include "toroid/shapes/plane.h"
+#include "toroid/shapes/sphere.h"
+#include "toroid/shapes/torus.h"
+
+namespace toroid {
+namespace {
+
+World torus_world(bool glass) {
+  World w = default_world();
+  auto floor = std::make_shared<Plane>();
+  floor->set_transform(translation(0, -1, 0));
+  floor->material.reflective = 0.3;
+  w.objects.push_back(floor);
+  for (int i = 0; i < 6; ++i) {
+    auto t = std::make_shared<Torus>(0.8, 0.2);
+    t->set_transform(translation(-2.5 + i, 0, 1.5) * rotation_x(0.4 * i));
+    if (glass && i % 2 == 0) {
+      t->material.transparency = 0.9;
+      t->material.reflective = 0.9;
+      t->material.refractive_index = 1.5;
+    }
+    w.objects.push_back(t);
+  }
+  return w;
+}
+
+void expect_same_picture_with_and_without_index(World w) {
+  Camera camera(48, 32, 1.0);
+  camera.set_transform(view_transform(point(0, 2, -6), point(0, 0, 0.5), vector(0, 1, 0)));
+  const Canvas plain = render(camera, w);
+  index_objects(w);
+  ASSERT_EQ(w.index.size(), w.objects.size());
+  const Canvas indexed = render(camera, w);
+  int lit = 0;
+  for (int y = 0; y < camera.vsize(); ++y)
+    for (int x = 0; x < camera.hsize(); ++x) {
+      const Color a = plain.pixel_at(x, y), b = indexed.pixel_at(x, y);
+      ASSERT_EQ(a.r, b.r) << x << "," << y;
+      ASSERT_EQ(a.g, b.g) << x << "," << y;
+      ASSERT_EQ(a.b, b.b) << x << "," << y;
+      lit += a.r > 0;
+    }
+  EXPECT_GT(lit, camera.hsize() * camera.vsize() / 2);
+}
+
+TEST(WorldIndex, OpaqueTorusWorldLooksTheSame) { expect_same_picture_with_and_without_index(torus_world(false)); }
+
+TEST(WorldIndex, GlassTorusWorldLooksTheSame) { expect_same_picture_with_and_without_index(torus_world(true)); }
+
+TEST(WorldIndex, IsIgnoredOnceObjectsAreAdded) {
+  World w = torus_world(false);
+  index_objects(w);
+  auto s = std::make_shared<Sphere>();
+  s->set_transform(translation(0, 0, -4));  // right in front of the ray below
+  w.objects.push_back(s);
+  Intersection h;
+  ASSERT_TRUE(intersect_nearest(w, Ray{point(0, 0, -8), vector(0, 0, 1)}, h));
+  EXPECT_EQ(h.object, s.get());
+}
+
+}  // namespace
+}  // namespace toroid

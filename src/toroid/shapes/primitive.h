@@ -1,0 +1,53 @@
+// A shape with a surface of its own and at most four intersections along
+// any ray (sphere, plane, cube, cylinder, cone, triangle, torus). Derived
+// lists them once, into a fixed array, with
+//   int find_hits(const Ray& local_ray, Intersection hits[kMaxHits]) const;
+// (every intersection, any t, in the order local_intersect lists them;
+// returns how many), and the renderer's queries (nearest hit, shadow test)
+// read them from there instead of from a growing list. The template calls
+// find_hits directly: one virtual call per shape and query, not two.
+#pragma once
+
+#include "toroid/shapes/shape.h"
+
+namespace toroid {
+
+inline constexpr int kMaxPrimitiveHits = 4;
+
+template <typename Derived>
+class Primitive : public Shape {
+ public:
+  static constexpr int kMaxHits = kMaxPrimitiveHits;
+
+  void local_intersect(const Ray& local_ray, Intersections& xs) const final {
+    Intersection hits[kMaxHits];
+    const int n = self().find_hits(local_ray, hits);
+    xs.insert(xs.end(), hits, hits + n);
+  }
+
+  bool local_intersect_nearest(const Ray& local_ray, double t_max, Intersection& hit) const override {
+    Intersection hits[kMaxHits];
+    const int n = self().find_hits(local_ray, hits);
+    bool found = false;
+    for (int i = 0; i < n; ++i)
+      if (hits[i].t >= 0 && hits[i].t < t_max) {
+        hit = hits[i];
+        t_max = hits[i].t;
+        found = true;
+      }
+    return found;
+  }
+
+  bool local_blocks(const Ray& local_ray, double t_max) const override {
+    Intersection hits[kMaxHits];
+    const int n = self().find_hits(local_ray, hits);
+    for (int i = 0; i < n; ++i)
+      if (hits[i].t >= 0 && hits[i].t < t_max) return true;
+    return false;
+  }
+
+ private:
+  const Derived& self() const { return static_cast<const Derived&>(*this); }
+};
+
+}  // namespace toroid

@@ -1,0 +1,72 @@
+// A flat bounding volume hierarchy over a list of shapes that share one
+// space (the world's top level), for the renderer's two queries: the nearest
+// hit and "is anything in the way" (shadow rays). The book's Group::divide
+// builds its hierarchy out of groups inside the scene graph; this one sits
+// beside the scene graph, so shapes keep their parents and the world its
+// list. Shapes whose box is unbounded (planes) are kept aside and always
+// tested.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "toroid/render/intersection.h"
+#include "toroid/render/ray.h"
+
+namespace toroid {
+
+class Shape;
+
+class ShapeBvh {
+ public:
+  ShapeBvh() = default;
+  // Indexes the shapes' parent-space boxes as they are now: rebuild after
+  // adding, removing or moving shapes. The shapes must outlive the index.
+  explicit ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes);
+
+  // How many shapes it indexes (bounded and unbounded).
+  std::size_t size() const { return size_; }
+
+  // Shape::intersect_nearest over every indexed shape.
+  bool intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const;
+  // Shape::blocks over every indexed shape.
+  bool blocks(const Ray& ray, double t_max) const;
+
+  // Whether some indexed shape, or a shape below one, is transparent (has
+  // refraction): then shading needs intersect_up_to_hit.
+  bool any_transparent() const { return any_transparent_; }
+  // Replaces xs with the intersections, sorted by t, of the shapes whose
+  // box the ray's line meets before the nearest hit (t >= 0) is passed: at
+  // least every intersection up to the hit, negative t included, which is
+  // what the containers algorithm (prepare_computations) reads.
+  void intersect_up_to_hit(const Ray& ray, Intersections& xs) const;
+
+  // Memory the index holds (nodes and shape lists), for the memory report.
+  std::size_t bytes() const;
+
+ private:
+  // Boxes in float, rounded outwards, so that a node takes 32 bytes.
+  struct Node {
+    float lo[3], hi[3];
+    // Leaf (count > 0): shapes_[first .. first + count). Interior (count 0):
+    // children at this node's index + 1 and at `first`.
+    std::uint32_t first;
+    std::uint32_t count;
+  };
+  struct Item;
+
+  std::uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end);
+  template <typename Stop>
+  bool walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const;
+
+  std::vector<Node> nodes_;
+  std::vector<const Shape*> shapes_;     // bounded shapes, in leaf order
+  std::vector<const Shape*> unbounded_;  // tested by every query
+  std::size_t size_ = 0;
+  bool any_transparent_ = false;
+};
+
+}  // namespace toroid

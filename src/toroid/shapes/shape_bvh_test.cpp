@@ -1,0 +1,134 @@
+#include "toroid/shapes/shape_bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "toroid/math/transform.h"
+#include "toroid/shapes/group.h"
+#include "toroid/shapes/plane.h"
+#include "toroid/shapes/sphere.h"
+#include "toroid/shapes/torus.h"
+
+namespace toroid {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Spheres and tori scattered in a 20-unit cube, one group, one plane.
+std::vector<std::shared_ptr<Shape>> scattered_shapes() {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> pos(-10, 10), angle(0, 6.283), size(0.2, 1.0);
+  std::vector<std::shared_ptr<Shape>> shapes;
+  for (int i = 0; i < 120; ++i) {
+    std::shared_ptr<Shape> s;
+    if (i % 2 == 0) s = std::make_shared<Sphere>();
+    else s = std::make_shared<Torus>(1.0, 0.3);
+    const double k = size(rng);
+    s->set_transform(translation(pos(rng), pos(rng), pos(rng)) * rotation_y(angle(rng)) * rotation_x(angle(rng)) *
+                     scaling(k, k, k));
+    if (i % 7 == 0) s->casts_shadow = false;
+    shapes.push_back(s);
+  }
+  auto g = std::make_shared<Group>();
+  g->add_child(std::make_shared<Sphere>());
+  g->set_transform(translation(0, 0, 12));
+  shapes.push_back(g);
+  auto p = std::make_shared<Plane>();
+  p->set_transform(translation(0, -11, 0));
+  shapes.push_back(p);
+  return shapes;
+}
+
+std::vector<Ray> random_rays(int n) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> pos(-14, 14), dir(-1, 1);
+  std::vector<Ray> rays;
+  for (int i = 0; i < n; ++i) {
+    const Tuple d = normalize(vector(dir(rng), dir(rng), dir(rng)));
+    rays.push_back({point(pos(rng), pos(rng), pos(rng)), d});
+  }
+  return rays;
+}
+
+TEST(ShapeBvh, NearestHitIsTheOneEveryShapeGives) {
+  const auto shapes = scattered_shapes();
+  const ShapeBvh bvh(shapes);
+  EXPECT_EQ(bvh.size(), shapes.size());
+  int hits = 0;
+  for (const Ray& ray : random_rays(3000)) {
+    Intersection expected, got;
+    bool found = false;
+    double t_max = kInf;
+    for (const auto& s : shapes)
+      if (s->intersect_nearest(ray, t_max, expected)) {
+        found = true;
+        t_max = expected.t;
+      }
+    ASSERT_EQ(bvh.intersect_nearest(ray, kInf, got), found);
+    if (!found) continue;
+    ++hits;
+    EXPECT_EQ(got.t, expected.t);
+    EXPECT_EQ(got.object, expected.object);
+  }
+  EXPECT_GT(hits, 1000);  // the rays do exercise the hierarchy
+}
+
+TEST(ShapeBvh, BlocksWhenSomeShadowCasterLiesBeforeTMax) {
+  const auto shapes = scattered_shapes();
+  const ShapeBvh bvh(shapes);
+  int blocked = 0;
+  for (const Ray& ray : random_rays(3000))
+    for (double t_max : {2.0, 8.0, kInf}) {
+      const bool expected = std::any_of(shapes.begin(), shapes.end(), [&](const auto& s) { return s->blocks(ray, t_max); });
+      ASSERT_EQ(bvh.blocks(ray, t_max), expected);
+      blocked += expected;
+    }
+  EXPECT_GT(blocked, 1000);
+}
+
+TEST(ShapeBvh, ListUpToTheHitHoldsEveryIntersectionBeforeIt) {
+  const auto shapes = scattered_shapes();
+  const ShapeBvh bvh(shapes);
+  Intersections got;
+  for (const Ray& ray : random_rays(2000)) {
+    Intersections all;
+    for (const auto& s : shapes) s->intersect(ray, all);
+    sort_intersections(all);
+    bvh.intersect_up_to_hit(ray, got);
+    ASSERT_TRUE(std::is_sorted(got.begin(), got.end(), [](auto& a, auto& b) { return a.t < b.t; }));
+    const Intersection* h = hit(all);
+    const double t_hit = h ? h->t : kInf;
+    // Every intersection up to the hit (negative t included), in order.
+    std::size_t j = 0;
+    for (const Intersection& x : all) {
+      if (x.t > t_hit) break;
+      while (j < got.size() && !(got[j].t == x.t && got[j].object == x.object)) ++j;
+      ASSERT_LT(j, got.size()) << "missing t = " << x.t;
+    }
+  }
+}
+
+TEST(ShapeBvh, SeesNothingWhenEmpty) {
+  const ShapeBvh bvh;
+  Intersection h;
+  const Ray ray{point(0, 0, -5), vector(0, 0, 1)};
+  EXPECT_FALSE(bvh.intersect_nearest(ray, kInf, h));
+  EXPECT_FALSE(bvh.blocks(ray, kInf));
+  EXPECT_EQ(bvh.size(), 0u);
+}
+
+TEST(ShapeBvh, KnowsWhetherSomethingBelowRefracts) {
+  auto shapes = scattered_shapes();
+  EXPECT_FALSE(ShapeBvh(shapes).any_transparent());
+  auto g = std::dynamic_pointer_cast<Group>(shapes[shapes.size() - 2]);
+  ASSERT_TRUE(g);
+  g->children()[0]->material.transparency = 0.5;
+  EXPECT_TRUE(ShapeBvh(shapes).any_transparent());
+}
+
+}  // namespace
+}  // namespace toroid

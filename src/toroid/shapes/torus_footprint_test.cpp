@@ -1,0 +1,60 @@
+// Memory: one torus instance costs at most 256 bytes (issue 6): the object
+// and the shared-pointer control block it is allocated with, as the scene
+// loader allocates it (make_shared). docs/performance.md has what glibc
+// makes of that (its chunk header and rounding) and the whole scene's cost
+// per torus (the world's list and index too).
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <memory>
+
+#include "toroid/math/transform.h"
+#include "toroid/shapes/torus.h"
+
+namespace toroid {
+namespace {
+
+std::size_t requested_bytes = 0;
+
+// Counts the bytes requested through it in requested_bytes. Stateless, so
+// that the control block does not grow by a copy of it: the block is then
+// make_shared's.
+template <typename T>
+struct CountingAllocator {
+  using value_type = T;
+  CountingAllocator() = default;
+  template <typename U>
+  CountingAllocator(const CountingAllocator<U>&) {}
+  T* allocate(std::size_t n) {
+    requested_bytes += n * sizeof(T);
+    return std::allocator<T>().allocate(n);
+  }
+  void deallocate(T* p, std::size_t n) { std::allocator<T>().deallocate(p, n); }
+  template <typename U>
+  bool operator==(const CountingAllocator<U>&) const { return true; }
+};
+
+TEST(TorusFootprint, ObjectFitsIn256Bytes) { EXPECT_LE(sizeof(Torus), 256u); }
+
+TEST(TorusFootprint, InstanceWithItsControlBlockFitsIn256Bytes) {
+  requested_bytes = 0;
+  auto t = std::allocate_shared<Torus>(CountingAllocator<Torus>(), 1.0, 0.25);
+  // A transform and a material of its own add nothing to the heap.
+  t->set_transform(translation(3, 0, 0) * rotation_x(0.5) * scaling(2, 2, 2));
+  t->material.color = Color{0.5, 0.4, 0.3};
+  EXPECT_GE(requested_bytes, sizeof(Torus));  // the count sees the object
+  EXPECT_LE(requested_bytes, 256u);
+}
+
+TEST(TorusFootprint, PartialTorusKeepsItsSweepApart) {
+  Torus t;
+  EXPECT_TRUE(t.sweep().whole());
+  t.set_sweep(TorusSweep{3.0, -1.0, 1.0});
+  EXPECT_EQ(t.sweep().theta_max, 3.0);
+  EXPECT_EQ(t.sweep().phi_min, -1.0);
+  t.set_sweep(TorusSweep{});
+  EXPECT_TRUE(t.sweep().whole());
+}
+
+}  // namespace
+}  // namespace toroid
