@@ -1,29 +1,28 @@
 // End to end: the built `toroid render` binary.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
-#include <cstdlib>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
+
+#include "support/command.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 int run(const std::string& args, std::string* err = nullptr) {
-  const fs::path errf = fs::temp_directory_path() / ("toroid_render_err_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(TOROID_BINARY) + " " + args + " 2>" + errf.string();
-  const int status = std::system(cmd.c_str());
-  if (err) {
-    std::ifstream in(errf);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    *err = ss.str();
-  }
-  fs::remove(errf);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const toroid::testing::CommandResult r = toroid::testing::run_toroid(args);
+  if (err) *err = r.err;
+  return r.exit_code;
 }
 
 class RenderCommand : public ::testing::Test {
@@ -66,6 +65,61 @@ TEST_F(RenderCommand, SceneErrorsExit2WithoutOutput) {
   EXPECT_EQ(run("render " + bad.string() + " -o " + out.string(), &err), 2);
   EXPECT_NE(err.find(bad.string() + ":1:8: unknown shape 'sphre' (did you mean 'sphere'?)"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+// Starts `toroid ARGS...` (stderr to `err`) and returns its process id.
+pid_t spawn_toroid(const std::vector<std::string>& args, const fs::path& err) {
+  std::vector<std::string> argv_s{TOROID_BINARY};
+  argv_s.insert(argv_s.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& a : argv_s) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = -1;
+  const int rc = posix_spawn(&pid, TOROID_BINARY, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return rc == 0 ? pid : -1;
+}
+
+// Waits up to `limit` for the process; false if it is still running.
+bool wait_for(pid_t pid, std::chrono::seconds limit, int& status) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < end) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+TEST_F(RenderCommand, InterruptStopsTheRenderWithoutOutput) {
+  // A render that would take many minutes: 800x600 pixels, 4096 samples each.
+  const fs::path out = dir_ / "slow.png";
+  const fs::path err = fs::temp_directory_path() / ("toroid_interrupt_err_" + std::to_string(::getpid()));
+  const pid_t pid = spawn_toroid({"render", kScene, "-o", out.string(), "--width", "800", "--height", "600",
+                                  "--samples", "4096", "--threads", "2"},
+                                 err);
+  ASSERT_GT(pid, 0);
+  // Let it load the scene and start rendering.
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, WNOHANG), 0) << "the render ended before the interrupt";
+  ASSERT_EQ(kill(pid, SIGINT), 0);
+  // A generous guard against a hang, not a timing goal: the workers stop
+  // after their current 16x16 tile.
+  const bool ended = wait_for(pid, std::chrono::seconds(60), status);
+  if (!ended) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+  }
+  ASSERT_TRUE(ended) << "still running 60 s after SIGINT";
+  const std::string message = toroid::testing::read_text(err);
+  fs::remove(err);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_NE(message.find("toroid render: interrupted; nothing written"), std::string::npos) << message;
+  EXPECT_TRUE(fs::is_empty(dir_)) << "the render left a file behind";
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 
 #include <unistd.h>
 
+#include <atomic>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -11,6 +13,7 @@
 #include <string>
 
 #include "toroid/io/image_writer.h"
+#include "toroid/render/image_limits.h"
 #include "toroid/render/renderer.h"
 #include "toroid/scene/scene_loader.h"
 
@@ -50,7 +53,39 @@ void draw_bar(const RenderProgress& p) {
   std::fflush(stderr);
 }
 
+// SIGINT / SIGTERM: the handler only records the signal; the render skips its
+// remaining tiles and the command exits 128 + signal without writing.
+static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
+std::atomic<bool> g_interrupted{false};
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void on_interrupt(int sig) {
+  g_signal = sig;
+  g_interrupted.store(true, std::memory_order_relaxed);
+}
+
+void catch_interrupts() {
+  struct sigaction sa {};
+  sa.sa_handler = on_interrupt;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+int interrupted_exit() {
+  std::cerr << "toroid render: interrupted; nothing written\n";
+  return 128 + g_signal;
+}
+
 int run_render(const RenderCommandOptions& opt) {
+  catch_interrupts();
+  // Everything that can be checked is checked before the render starts.
+  try {
+    check_image_path(opt.output);
+  } catch (const ImageWriteError& e) {
+    std::cerr << "toroid render: " << e.what() << "\n";
+    return 2;
+  }
   SceneLoadOptions load_options;
   if (!opt.solver.empty()) load_options.solver = solver_from_name(opt.solver);
   std::optional<Scene> scene;
@@ -62,9 +97,15 @@ int run_render(const RenderCommandOptions& opt) {
   }
   Camera camera = scene->camera;
   if (opt.width || opt.height) {
-    camera = Camera(opt.width.value_or(camera.hsize()), opt.height.value_or(camera.vsize()), camera.field_of_view());
+    const int w = opt.width.value_or(camera.hsize()), h = opt.height.value_or(camera.vsize());
+    if (const std::string e = image_size_error(w, h); !e.empty()) {
+      std::cerr << "toroid render: image size: " << e << "\n";
+      return 2;
+    }
+    camera = Camera(w, h, camera.field_of_view());
     camera.set_transform(scene->camera.transform());
   }
+  if (g_interrupted) return interrupted_exit();
 
   RenderOptions ro;
   ro.samples = opt.samples;
@@ -72,9 +113,11 @@ int run_render(const RenderCommandOptions& opt) {
   ro.max_depth = opt.max_depth;
   const bool show_bar = !opt.quiet && isatty(STDERR_FILENO);
   if (show_bar) ro.progress = draw_bar;
+  ro.cancel = &g_interrupted;
   RenderStats stats;
   const Canvas canvas = render_image(camera, scene->world, ro, &stats);
   if (show_bar) std::fputs("\r\x1b[K", stderr);
+  if (stats.cancelled || g_interrupted) return interrupted_exit();
 
   try {
     write_image(canvas, opt.output);
@@ -103,7 +146,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
   sub->add_option("scene", opt->scene, "Scene file (.yml/.yaml)")->required()->check(CLI::ExistingFile);
   sub->add_option("-o,--output", opt->output, "Output image: .png (8-bit sRGB) or .ppm (the book's plain PPM)")
       ->required();
-  const auto side = CLI::Range(1, 16384);
+  const auto side = CLI::Range(1, kMaxImageSide);
   sub->add_option("--width", opt->width, "Image width in pixels (overrides the camera's; keeps its field of view)")
       ->check(side);
   sub->add_option("--height", opt->height, "Image height in pixels (overrides the camera's; keeps its field of view)")

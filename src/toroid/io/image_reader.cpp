@@ -201,6 +201,9 @@ Canvas canvas_from_ppm(std::string_view data, const std::string& source) {
 Canvas read_image(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw ImageReadError("cannot read '" + path + "': it is a directory");
+  // A device or a pipe (/dev/zero) could be read forever.
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw ImageReadError("cannot read '" + path + "': not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ImageReadError("cannot read '" + path + "': " + std::strerror(errno));
   std::ostringstream ss;

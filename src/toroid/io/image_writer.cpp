@@ -77,30 +77,59 @@ std::string write_png(const Canvas& canvas, FILE* f) {
 
 }  // namespace
 
-void write_image(const Canvas& canvas, const std::string& path) {
-  const std::string ext = lower_extension(path);
-  if (ext != ".png" && ext != ".ppm")
-    throw ImageWriteError("cannot write '" + path + "': unknown image format '" + ext +
-                          "' (use a .png or .ppm file name)");
-  if (canvas.width() <= 0 || canvas.height() <= 0)
-    throw ImageWriteError("cannot write '" + path + "': the image is empty");
+namespace {
 
-  // A temporary name in the same directory, so that rename() is atomic.
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw ImageWriteError("cannot write '" + path + "': " + what);
+}
+
+void check_extension(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext != ".png" && ext != ".ppm") fail(path, "unknown image format '" + ext + "' (use a .png or .ppm file name)");
+}
+
+// Creates an empty temporary file beside `path` (same folder, so that
+// rename() is atomic) and returns its name; `fd` is open on it.
+std::string create_temporary_beside(const std::string& path, int& fd) {
   const std::filesystem::path target(path);
   const std::filesystem::path dir = target.parent_path().empty() ? std::filesystem::path(".") : target.parent_path();
-  std::string tmpl = (dir / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
-  const int fd = mkstemp(tmpl.data());
-  if (fd < 0) throw ImageWriteError("cannot write '" + path + "': " + std::strerror(errno));
-  const std::string tmp = tmpl;
+  std::error_code ec;
+  if (!std::filesystem::exists(dir, ec)) fail(path, "folder '" + dir.string() + "' does not exist");
+  if (!std::filesystem::is_directory(dir, ec)) fail(path, "'" + dir.string() + "' is not a folder");
+  if (std::filesystem::is_directory(target, ec)) fail(path, "it is a folder");
+  std::string name = ".";  // appended, not "." + ...: GCC 12 warns falsely (-Wrestrict) on that
+  name += target.filename().string();
+  name += ".tmp-XXXXXX";
+  std::string tmpl = (dir / name).string();
+  fd = mkstemp(tmpl.data());
+  if (fd < 0) fail(path, "cannot create a file in '" + dir.string() + "': " + std::strerror(errno));
+  return tmpl;
+}
+
+}  // namespace
+
+void check_image_path(const std::string& path) {
+  check_extension(path);
+  int fd = -1;
+  const std::string tmp = create_temporary_beside(path, fd);
+  ::close(fd);
+  std::remove(tmp.c_str());
+}
+
+void write_image(const Canvas& canvas, const std::string& path) {
+  check_extension(path);
+  if (canvas.width() <= 0 || canvas.height() <= 0) fail(path, "the image is empty");
+  int fd = -1;
+  const std::string tmp = create_temporary_beside(path, fd);
   FILE* f = fdopen(fd, "wb");
   if (!f) {
     const int e = errno;
     ::close(fd);
     std::remove(tmp.c_str());
-    throw ImageWriteError("cannot write '" + path + "': " + std::strerror(e));
+    fail(path, std::strerror(e));
   }
   std::string error;
-  if (ext == ".png") {
+  if (lower_extension(path) == ".png") {
     error = write_png(canvas, f);
   } else {
     const std::string ppm = canvas_to_ppm(canvas);
@@ -118,7 +147,7 @@ void write_image(const Canvas& canvas, const std::string& path) {
   }
   if (!error.empty()) {
     std::remove(tmp.c_str());
-    throw ImageWriteError("cannot write '" + path + "': " + error);
+    fail(path, error);
   }
 }
 

@@ -20,4 +20,10 @@ struct ImageWriteError : std::runtime_error {
 // directory") and leaves nothing behind on failure.
 void write_image(const Canvas& canvas, const std::string& path);
 
+// Checks, before a long render, that write_image can save to `path`: a known
+// extension, an existing folder that this process can create files in (a
+// temporary file is created there and removed), and not itself a folder.
+// Throws ImageWriteError with the same messages as write_image.
+void check_image_path(const std::string& path);
+
 }  // namespace toroid

@@ -84,10 +84,51 @@ TEST(ImageWriter, Errors) {
     write_image(c, missing);
     ADD_FAILURE();
   } catch (const ImageWriteError& e) {
-    EXPECT_EQ(std::string(e.what()), "cannot write '" + missing + "': No such file or directory");
+    EXPECT_EQ(std::string(e.what()),
+              "cannot write '" + missing + "': folder '" + (d / "nodir").string() + "' does not exist");
   }
   EXPECT_FALSE(fs::exists(missing));
   EXPECT_TRUE(fs::is_empty(d));
+  fs::remove_all(d);
+}
+
+std::string check_error(const std::string& path) {
+  try {
+    check_image_path(path);
+  } catch (const ImageWriteError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ImageWriter, CheckingAWritablePathLeavesNothingBehind) {
+  const fs::path d = temp_dir("check");
+  EXPECT_EQ(check_error((d / "x.png").string()), "");
+  EXPECT_EQ(check_error((d / "x.ppm").string()), "");
+  EXPECT_TRUE(fs::is_empty(d));
+  std::ofstream(d / "old.png") << "old";
+  EXPECT_EQ(check_error((d / "old.png").string()), "");
+  std::ifstream in(d / "old.png");
+  std::string content;
+  in >> content;
+  EXPECT_EQ(content, "old");
+  fs::remove_all(d);
+}
+
+TEST(ImageWriter, CheckingNamesWhatCannotBeWritten) {
+  const fs::path d = temp_dir("checkbad");
+  const std::string jpg = (d / "x.jpg").string();
+  EXPECT_EQ(check_error(jpg), "cannot write '" + jpg + "': unknown image format '.jpg' (use a .png or .ppm file name)");
+  const std::string nodir = (d / "nodir" / "x.png").string();
+  EXPECT_EQ(check_error(nodir), "cannot write '" + nodir + "': folder '" + (d / "nodir").string() + "' does not exist");
+  std::ofstream(d / "file") << "x";
+  const std::string under_file = (d / "file" / "x.png").string();
+  EXPECT_EQ(check_error(under_file), "cannot write '" + under_file + "': '" + (d / "file").string() + "' is not a folder");
+  fs::create_directories(d / "dir.png");
+  const std::string dir = (d / "dir.png").string();
+  EXPECT_EQ(check_error(dir), "cannot write '" + dir + "': it is a folder");
+  // A folder nobody may create files in (even root: procfs).
+  EXPECT_EQ(check_error("/proc/toroid.png").rfind("cannot write '/proc/toroid.png': ", 0), 0u);
   fs::remove_all(d);
 }
 

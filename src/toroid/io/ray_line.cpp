@@ -1,8 +1,8 @@
 #include "toroid/io/ray_line.h"
 
-#include <charconv>
-#include <cmath>
 #include <cstdio>
+
+#include "toroid/io/number_text.h"
 
 namespace toroid {
 namespace {
@@ -26,19 +26,8 @@ bool parse_ray_line(std::string_view line, RayLine& out, std::string& error) {
       return false;
     }
     double x = 0;
-    // from_chars rejects a leading '+'; accept it as people write it.
-    const std::string_view num = token.size() > 1 && token[0] == '+' ? token.substr(1) : token;
-    const auto [ptr, ec] = std::from_chars(num.data(), num.data() + num.size(), x);
-    if (ec == std::errc::result_out_of_range) {
-      error = "number out of range: '" + std::string(token) + "'";
-      return false;
-    }
-    if (ec != std::errc() || ptr != num.data() + num.size()) {
-      error = "not a number: '" + std::string(token) + "'";
-      return false;
-    }
-    if (!std::isfinite(x)) {
-      error = "not a finite number: '" + std::string(token) + "'";
+    if (const NumberText r = read_finite_double(token, x); r != NumberText::Ok) {
+      error = describe(r, token);
       return false;
     }
     v[count++] = x;

@@ -49,12 +49,14 @@ Canvas render_image(const Camera& camera, const World& world, const RenderOption
   double next_report = options.progress_interval_s;  // guarded by progress_mutex
   auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };
 
+  auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed); };
   auto render_tile = [&](int t) {
     const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
     const int x1 = std::min(w, x0 + tile), y1 = std::min(h, y0 + tile);
     const std::uint64_t before = rays_traced_on_this_thread();
     for (int y = y0; y < y1; ++y)
       for (int x = x0; x < x1; ++x) {
+        if (cancelled()) return;  // per pixel: a tile of many samples can take seconds
         Color sum = kBlack;
         for (int s = 0; s < samples; ++s) {
           double dx, dy;
@@ -88,8 +90,9 @@ Canvas render_image(const Camera& camera, const World& world, const RenderOption
     });
   }
   const double seconds = elapsed();
-  if (options.progress) options.progress(RenderProgress{total, total, seconds, rays.load()});
-  if (stats) *stats = RenderStats{seconds, rays.load(), threads};
+  const bool stopped = cancelled();
+  if (options.progress && !stopped) options.progress(RenderProgress{total, total, seconds, rays.load()});
+  if (stats) *stats = RenderStats{seconds, rays.load(), threads, stopped};
   return canvas;
 }
 

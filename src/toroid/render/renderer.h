@@ -2,6 +2,7 @@
 // stratified, deterministically jittered supersampling.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 
@@ -33,12 +34,16 @@ struct RenderOptions {
   // thread, never concurrently) and once at the end.
   std::function<void(const RenderProgress&)> progress;
   double progress_interval_s = 0.25;
+  // When given and set (e.g. by a signal handler), the tiles not yet begun
+  // are skipped and render_image returns early with stats->cancelled set.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct RenderStats {
   double seconds = 0;
   std::uint64_t rays = 0;  // camera + shadow + reflected + refracted rays
   int threads = 0;
+  bool cancelled = false;  // stopped by RenderOptions::cancel: the image is incomplete
 };
 
 // Renders the image; fills `stats` when given. Precondition: options valid.

@@ -97,5 +97,43 @@ TEST(Renderer, ProgressEndsAtTheTotal) {
   EXPECT_EQ(last.pixels_total, 37 * 23);
 }
 
+TEST(Renderer, ACancelledRenderStopsAndSaysSo) {
+  std::atomic<bool> cancel{true};
+  RenderOptions o;
+  o.threads = 2;
+  o.cancel = &cancel;
+  RenderStats stats;
+  render_image(test_camera(), torus_world(), o, &stats);
+  EXPECT_TRUE(stats.cancelled);
+  EXPECT_EQ(stats.rays, 0u);  // no tile began
+}
+
+TEST(Renderer, CancellingMidwaySkipsTheRemainingTiles) {
+  std::atomic<bool> cancel{false};
+  RenderOptions o;
+  o.threads = 1;
+  o.tile_size = 4;
+  o.cancel = &cancel;
+  o.progress_interval_s = 0;
+  std::int64_t last_done = 0;
+  o.progress = [&](const RenderProgress& p) {
+    last_done = p.pixels_done;
+    cancel = true;  // after the first tile
+  };
+  RenderStats stats;
+  render_image(test_camera(), torus_world(), o, &stats);
+  EXPECT_TRUE(stats.cancelled);
+  EXPECT_EQ(last_done, 16);  // one 4x4 tile, and no final report
+}
+
+TEST(Renderer, AnUncancelledRenderIsComplete) {
+  std::atomic<bool> cancel{false};
+  RenderOptions o;
+  o.cancel = &cancel;
+  RenderStats stats;
+  render_image(test_camera(), torus_world(), o, &stats);
+  EXPECT_FALSE(stats.cancelled);
+}
+
 }  // namespace
 }  // namespace toroid

@@ -2,10 +2,12 @@
 
 #include <tiny_obj_loader.h>
 
+#include <charconv>
 #include <fstream>
 #include <regex>
 #include <sstream>
 
+#include "toroid/io/number_text.h"
 #include "toroid/shapes/smooth_triangle.h"
 #include "toroid/shapes/triangle.h"
 
@@ -15,44 +17,121 @@ namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-// Rewrites the vertex references of "f" lines without their texture index
-// ("v/t/n" -> "v//n", "v/t" -> "v"). Toroid has no use for texture
-// coordinates, and tinyobjloader rejects an index of 0, which the book's
-// fixtures use. Keeps one output line per input line, so line numbers in
-// tinyobjloader's messages stay right.
-std::string drop_texture_indices(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
+struct Token {
+  std::string_view text;
+  std::size_t column;  // 1-based
+};
+
+// The blank-separated words of a line, up to a '#' comment.
+std::vector<Token> tokens_of(std::string_view line) {
+  std::vector<Token> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    if (is_blank(line[i])) {
+      ++i;
+      continue;
+    }
+    if (line[i] == '#') break;
+    std::size_t j = i;
+    while (j < line.size() && !is_blank(line[j])) ++j;
+    out.push_back({line.substr(i, j - i), i + 1});
+    i = j;
+  }
+  return out;
+}
+
+// Reads the whole token as an integer; false if it is not one.
+bool read_integer(std::string_view text, long long& value) {
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+// The counts of "v" and "vn" records (faces may refer ahead to them).
+void count_records(std::string_view text, std::size_t& vertices, std::size_t& normals) {
+  vertices = normals = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
     std::size_t end = text.find('\n', pos);
     if (end == std::string_view::npos) end = text.size();
+    std::size_t i = pos;
+    while (i < end && is_blank(text[i])) ++i;
+    if (i + 1 < end && text[i] == 'v' && is_blank(text[i + 1])) ++vertices;
+    if (i + 2 < end && text[i] == 'v' && text[i + 1] == 'n' && is_blank(text[i + 2])) ++normals;
+    pos = end + 1;
+  }
+}
+
+// Checks the records toroid uses ("v", "vn", "f"), naming source:line:column
+// of what is wrong, and rewrites the vertex references of faces without their
+// texture index ("v/t/n" -> "v//n", "v/t" -> "v"): toroid has no use for
+// texture coordinates, and tinyobjloader rejects an index of 0, which the
+// book's fixtures use. Keeps one output line per input line, so line numbers
+// in tinyobjloader's messages stay right.
+std::string checked_obj_text(std::string_view text, const std::string& source) {
+  std::size_t total_vertices = 0, total_normals = 0;
+  count_records(text, total_vertices, total_normals);
+  std::size_t vertices = 0, normals = 0;  // so far: negative indices count back from here
+  std::string out;
+  out.reserve(text.size());
+  std::size_t pos = 0;
+  long line_no = 0;
+  while (pos < text.size()) {
+    ++line_no;
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
     const std::string_view line = text.substr(pos, end - pos);
-    std::size_t i = 0;
-    while (i < line.size() && is_blank(line[i])) ++i;
-    if (i + 1 < line.size() && line[i] == 'f' && is_blank(line[i + 1])) {
-      out.append(line.substr(0, i + 1));
-      i += 1;
-      while (i < line.size()) {
-        if (is_blank(line[i])) {
-          out.push_back(line[i++]);
-          continue;
-        }
-        std::size_t j = i;
-        while (j < line.size() && !is_blank(line[j])) ++j;
-        const std::string_view ref = line.substr(i, j - i);
+    auto fail = [&](std::size_t column, const std::string& what) {
+      throw ObjError(source + ":" + std::to_string(line_no) + ":" + std::to_string(column) + ": " + what);
+    };
+    const std::vector<Token> tokens = tokens_of(line);
+    const std::string_view keyword = tokens.empty() ? std::string_view{} : tokens[0].text;
+    if (keyword == "v" || keyword == "vn") {
+      const bool vertex = keyword == "v";
+      // "v x y z [w]" or "v x y z r g b"; "vn x y z".
+      const std::size_t lo = 3, hi = vertex ? 6 : 3;
+      if (tokens.size() - 1 < lo || tokens.size() - 1 > hi)
+        fail(tokens[0].column, std::string(vertex ? "a vertex" : "a normal") + " needs " +
+                                   (vertex ? "3 to 6 numbers (x y z [w | r g b])" : "3 numbers (x y z)") + ", got " +
+                                   std::to_string(tokens.size() - 1));
+      for (std::size_t k = 1; k < tokens.size(); ++k) {
+        double v = 0;
+        if (const NumberText r = read_finite_double(tokens[k].text, v); r != NumberText::Ok)
+          fail(tokens[k].column, describe(r, tokens[k].text));
+      }
+      ++(vertex ? vertices : normals);
+      out.append(line);
+    } else if (keyword == "f") {
+      if (tokens.size() < 4)
+        fail(tokens[0].column, "a face needs at least 3 vertices, got " + std::to_string(tokens.size() - 1));
+      // Index i (1-based; negative counts back from the records so far) of
+      // `what` must name one of the `total` records.
+      auto check_index = [&](std::string_view t, std::size_t column, std::size_t so_far, std::size_t total,
+                             const char* what, const char* plural) {
+        long long i = 0;
+        if (!read_integer(t, i)) fail(column, std::string("not a ") + what + " index: '" + std::string(t) + "'");
+        const long long resolved = i < 0 ? static_cast<long long>(so_far) + i + 1 : i;
+        if (i == 0) fail(column, std::string(what) + " indices start at 1, got 0");
+        if (resolved < 1 || resolved > static_cast<long long>(total))
+          fail(column, std::string("face refers to ") + what + " " + std::string(t) + ", but " +
+                           std::to_string(i < 0 ? so_far : total) + " " + plural + " are defined" +
+                           (i < 0 ? " before it" : ""));
+      };
+      out.append(line.substr(0, tokens[1].column - 1));
+      for (std::size_t k = 1; k < tokens.size(); ++k) {
+        const std::string_view ref = tokens[k].text;
         const std::size_t s1 = ref.find('/');
-        if (s1 == std::string_view::npos) {
-          out.append(ref);
-        } else {
-          out.append(ref.substr(0, s1));
+        check_index(ref.substr(0, s1), tokens[k].column, vertices, total_vertices, "vertex", "vertices");
+        out.append(ref.substr(0, s1));
+        if (s1 != std::string_view::npos) {
           const std::size_t s2 = ref.find('/', s1 + 1);
           if (s2 != std::string_view::npos) {
-            out.append("//");
-            out.append(ref.substr(s2 + 1));
+            const std::string_view n = ref.substr(s2 + 1);
+            check_index(n, tokens[k].column + s2 + 1, normals, total_normals, "normal", "normals");
+            out.append("//").append(n);
           }
         }
-        i = j;
+        out.push_back(' ');
       }
     } else {
       out.append(line);
@@ -91,7 +170,7 @@ ObjFile parse_obj(std::string_view text, const std::string& source) {
   config.triangulate = false;  // the book's fan order, below
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(drop_texture_indices(text), "", config))
+  if (!reader.ParseFromString(checked_obj_text(text, source), "", config))
     throw_parse_error(source, reader.Error().empty() ? "cannot parse OBJ" : reader.Error());
 
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
@@ -154,6 +233,9 @@ ObjFile parse_obj(std::string_view text, const std::string& source) {
 }
 
 ObjFile parse_obj_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw ObjError(path.string() + ": not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ObjError(path.string() + ": cannot open OBJ file");
   std::ostringstream text;

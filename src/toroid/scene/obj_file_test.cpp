@@ -169,6 +169,43 @@ TEST(ObjFileParser, AFaceBeyondTheVerticesIsAnError) {
   EXPECT_NE(message.find("vertex 9"), std::string::npos) << message;
 }
 
+std::string parse_error(std::string_view text) {
+  try {
+    parse_obj(text, "m.obj");
+  } catch (const ObjError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(ObjFileParser, NegativeIndicesSignsAndCommentsAreRead) {
+  const ObjFile obj = parse_obj("v +1 0 0 # a comment\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nf -3//1 -2//-1 -1//1\n");
+  ASSERT_EQ(obj.default_group->size(), 1u);
+  EXPECT_DOUBLE_EQ(obj.vertices[0].x, 1);
+}
+
+TEST(ObjFileParser, BadRecordsNameLineAndColumn) {
+  EXPECT_EQ(parse_error("v 0 0 0\nv 1 zero 0\n"), "m.obj:2:5: not a number: 'zero'");
+  EXPECT_EQ(parse_error("v 0 0 0\nv 1e400 0 0\n"), "m.obj:2:3: number out of range: '1e400'");
+  EXPECT_EQ(parse_error("v nan 0 0\n"), "m.obj:1:3: not a finite number: 'nan'");
+  EXPECT_EQ(parse_error("v 0 0\n"), "m.obj:1:1: a vertex needs 3 to 6 numbers (x y z [w | r g b]), got 2");
+  EXPECT_EQ(parse_error("vn 0 0 1 0\n"), "m.obj:1:1: a normal needs 3 numbers (x y z), got 4");
+  EXPECT_EQ(parse_error("v 0 0 0\nv 1 0 0\nf 1 2\n"), "m.obj:3:1: a face needs at least 3 vertices, got 2");
+  EXPECT_EQ(parse_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n"), "m.obj:4:7: not a vertex index: 'x'");
+  EXPECT_EQ(parse_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1  0 2\n"), "m.obj:4:6: vertex indices start at 1, got 0");
+  EXPECT_EQ(parse_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"),
+            "m.obj:4:7: face refers to vertex 4, but 3 vertices are defined");
+  EXPECT_EQ(parse_error("v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n"),
+            "m.obj:3:9: face refers to vertex -3, but 2 vertices are defined before it");
+  EXPECT_EQ(parse_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1/5/1 2//2 3//1\n"),
+            "m.obj:5:12: face refers to normal 2, but 1 normals are defined");
+}
+
+TEST(ObjFileParser, AFolderIsNotAnObjFile) {
+  const std::string message = error_of(std::filesystem::temp_directory_path());
+  EXPECT_NE(message.find(": not a regular file"), std::string::npos) << message;
+}
+
 TEST(ObjFileParser, ObjectNamesAndRepeatedGroupsJoinOneGroup) {
   const ObjFile obj = parse_obj(
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"

@@ -1,5 +1,6 @@
 #include "toroid/scene/scene_loader.h"
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 
 #include "toroid/io/image_reader.h"
 #include "toroid/math/transform.h"
+#include "toroid/render/image_limits.h"
 #include "toroid/render/pattern.h"
 #include "toroid/render/texture_map.h"
 #include "toroid/scene/obj_file.h"
@@ -48,8 +50,14 @@ int edit_distance(const std::string& a, const std::string& b) {
 
 namespace {
 
-constexpr int kMaxImageSide = 16384;
 constexpr std::size_t kGroupBvhThreshold = 8;
+
+// Limits that keep a mistaken (or hostile) scene from exhausting the stack,
+// memory or time; docs/errors.md lists them. Defines and YAML aliases can
+// repeat a group or a pattern inside itself, which multiplies the work.
+constexpr int kMaxNesting = 64;  // groups and CSG inside each other; defines extending defines
+constexpr std::size_t kMaxShapes = 100'000;  // shapes made from YAML (meshes belong in OBJ files: not counted)
+constexpr std::size_t kMaxPatterns = 100'000;
 
 // " (did you mean 'x'?)" for the nearest candidate, if near enough.
 std::string suggestion(const std::string& word, const std::vector<std::string>& candidates) {
@@ -113,11 +121,11 @@ class Loader {
   std::vector<Entry> entries(const YAML::Node& map, const std::string& what) const {
     if (!map.IsMap()) fail(map, what + " must be a map, got " + describe(map));
     std::vector<Entry> out;
+    std::set<std::string> seen;
     for (auto it = map.begin(); it != map.end(); ++it) {
       if (!it->first.IsScalar()) fail(it->first, "keys must be plain names");
       const std::string key = it->first.Scalar();
-      for (const auto& e : out)
-        if (e.key == key) fail(it->first, "duplicate key '" + key + "'");
+      if (!seen.insert(key).second) fail(it->first, "duplicate key '" + key + "'");
       out.push_back({key, it->first, it->second});
     }
     return out;
@@ -145,7 +153,14 @@ class Loader {
   double number(const YAML::Node& n) const {
     if (!n.IsScalar()) fail(n, "expected a number, got " + describe(n));
     double v = 0;
-    if (!YAML::convert<double>::decode(n, v)) fail(n, "expected a number, got '" + n.Scalar() + "'");
+    if (!YAML::convert<double>::decode(n, v)) {
+      const char* text = n.Scalar().c_str();
+      char* end = nullptr;
+      errno = 0;
+      std::strtod(text, &end);
+      if (errno == ERANGE && end != text && *end == '\0') fail(n, "number out of range: '" + n.Scalar() + "'");
+      fail(n, "expected a number, got '" + n.Scalar() + "'");
+    }
     if (!std::isfinite(v)) fail(n, "expected a finite number, got '" + n.Scalar() + "'");
     return v;
   }
@@ -191,10 +206,28 @@ class Loader {
     return vector(v[0], v[1], v[2]);
   }
 
+  // Counts one more of something limited; fails at `where` past the limit.
+  void count(std::size_t& counter, std::size_t limit, const YAML::Node& where, const std::string& what) const {
+    if (++counter > limit)
+      fail(where, "the scene makes more than " + std::to_string(limit) + " " + what +
+                      " (defines or YAML aliases that repeat one another multiply them)");
+  }
+  void check_nesting(std::size_t depth, const YAML::Node& where, const std::string& what) const {
+    if (depth > static_cast<std::size_t>(kMaxNesting))
+      fail(where, what + " nested more than " + std::to_string(kMaxNesting) + " deep");
+  }
+
+  [[noreturn]] void fail_not_found(const YAML::Node& where, const std::string& kind, const std::string& file,
+                                   const std::filesystem::path& resolved) const {
+    fail(where, kind + " file '" + file + "' not found" +
+                    (resolved.string() == file ? "" : " (looked for '" + resolved.string() + "')"));
+  }
+
   // A file named in the scene: relative names are relative to the scene's directory.
   std::filesystem::path resolve(const std::string& file) const {
     const std::filesystem::path p(file);
-    return p.is_absolute() ? p : base_dir_ / p;
+    // Not lexically_normal(): "a/../b" differs from "b" when a is a symlink.
+    return p.is_absolute() || base_dir_ == "." ? p : base_dir_ / p;
   }
 
   const Define& lookup_define(const YAML::Node& name_node, const std::string& what) const {
@@ -214,11 +247,21 @@ class Loader {
     if (!std::isfinite(det) || det == 0.0) fail(where, "singular transform (determinant 0): it cannot be inverted");
   }
 
+  static const std::vector<std::string>& transform_kinds() {
+    static const std::vector<std::string> k{"translate", "scale", "rotate-x", "rotate-y", "rotate-z", "shear"};
+    return k;
+  }
+  static bool is_transform_kind(const std::string& k) {
+    return std::find(transform_kinds().begin(), transform_kinds().end(), k) != transform_kinds().end();
+  }
+
   // Composes a transform list onto `m` (first listed applies first).
   void apply_transform_list(const YAML::Node& list, Matrix4& m, std::set<std::string>& visiting) const {
     if (!list.IsSequence()) fail(list, "transform must be a list, got " + describe(list));
     for (const YAML::Node& op : list) {
       if (op.IsScalar()) {
+        if (is_transform_kind(op.Scalar()) && !defines_.count(op.Scalar()))
+          fail(list, "each transform operation is a list of its own: [[" + op.Scalar() + ", ...], ...]");
         apply_transform_define(op, m, visiting);
         continue;
       }
@@ -250,21 +293,29 @@ class Loader {
         const auto v = args(6);
         t = shearing(v[0], v[1], v[2], v[3], v[4], v[5]);
       } else {
-        fail(op[0], "unknown transform '" + kind + "'" +
-                        suggestion(kind, {"translate", "scale", "rotate-x", "rotate-y", "rotate-z", "shear"}));
+        fail(op[0], "unknown transform '" + kind + "'" + suggestion(kind, transform_kinds()));
       }
       m = t * m;
     }
   }
 
+  // Each transform define is composed once and remembered: defines that
+  // list another twice would otherwise double the work at every level.
   void apply_transform_define(const YAML::Node& name_node, Matrix4& m, std::set<std::string>& visiting) const {
     const Define& d = lookup_define(name_node, "transform");
     const std::string n = name_node.Scalar();
-    if (!visiting.insert(n).second) fail(name_node, "circular define: '" + n + "' refers to itself");
-    if (!d.value.IsSequence()) fail(name_node, "'" + n + "' is not a transform (its value is not a list)");
-    if (d.extend) apply_transform_define(*d.extend, m, visiting);
-    apply_transform_list(d.value, m, visiting);
-    visiting.erase(n);
+    auto known = transform_defines_.find(n);
+    if (known == transform_defines_.end()) {
+      if (!visiting.insert(n).second) fail(name_node, "circular define: '" + n + "' refers to itself");
+      check_nesting(visiting.size(), name_node, "transform defines");
+      if (!d.value.IsSequence()) fail(name_node, "'" + n + "' is not a transform (its value is not a list)");
+      Matrix4 composed = Matrix4::identity();
+      if (d.extend) apply_transform_define(*d.extend, composed, visiting);
+      apply_transform_list(d.value, composed, visiting);
+      visiting.erase(n);
+      known = transform_defines_.emplace(n, composed).first;
+    }
+    m = known->second * m;
   }
 
   Matrix4 transform_of(const YAML::Node& list) const {
@@ -292,7 +343,7 @@ class Loader {
     const std::filesystem::path p = resolve(file);
     std::error_code ec;  // when the file cannot even be looked at, read_image says why
     if (!std::filesystem::exists(p, ec) && !ec)
-      fail(file_node, "image file '" + file + "' not found (looked for '" + p.string() + "')");
+      fail_not_found(file_node, "image", file, p);
     const std::filesystem::path canonical = std::filesystem::canonical(p, ec);
     const std::string key = ec ? p.string() : canonical.string();
     if (auto it = images_.find(key); it != images_.end()) return it->second;
@@ -372,7 +423,9 @@ class Loader {
     return std::make_shared<TextureMapPattern>(std::move(uv), std::move(f));
   }
 
-  std::shared_ptr<Pattern> pattern(const YAML::Node& node) const {
+  std::shared_ptr<Pattern> pattern(const YAML::Node& node, std::size_t depth = 1) const {
+    check_nesting(depth, node, "blended patterns");
+    count(patterns_made_, kMaxPatterns, node, "patterns");
     const auto es = entries(node, "a pattern");
     const Entry& type = require(es, "type", node, "a pattern");
     const std::string kind = name(type.value, "pattern type");
@@ -383,7 +436,7 @@ class Loader {
       check_keys(es, {"type", "patterns", "transform"}, "a blended pattern");
       const Entry& ps = require(es, "patterns", node, "a blended pattern");
       if (!ps.value.IsSequence() || ps.value.size() != 2) fail(ps.value, "'patterns' must be a list of 2 patterns");
-      p = std::make_shared<BlendedPattern>(pattern(ps.value[0]), pattern(ps.value[1]));
+      p = std::make_shared<BlendedPattern>(pattern(ps.value[0], depth + 1), pattern(ps.value[1], depth + 1));
     } else {
       const std::vector<std::string> kinds{"stripes", "gradient", "rings", "checkers", "blended", "map"};
       if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
@@ -413,7 +466,7 @@ class Loader {
       else if (e.key == "shininess") m.shininess = number(e.value);
       else if (e.key == "reflective") m.reflective = number(e.value);
       else if (e.key == "transparency") m.transparency = number(e.value);
-      else if (e.key == "refractive-index") m.refractive_index = number(e.value);
+      else if (e.key == "refractive-index") m.refractive_index = positive(e.value, "refractive-index");
       else if (e.key == "pattern") m.pattern = pattern(e.value);
       else if (e.key == "shadow") casts_shadow = boolean(e.value);
     }
@@ -424,6 +477,7 @@ class Loader {
     const Define& d = lookup_define(name_node, "material");
     const std::string n = name_node.Scalar();
     if (!visiting.insert(n).second) fail(name_node, "circular define: '" + n + "' refers to itself");
+    check_nesting(visiting.size(), name_node, "material defines");
     if (!d.value.IsMap() || d.value["add"]) fail(name_node, "'" + n + "' is not a material");
     if (d.extend) apply_material_define(*d.extend, m, casts_shadow, visiting);
     apply_material_map(d.value, m, casts_shadow);
@@ -451,7 +505,9 @@ class Loader {
   }
 
   // The shape's kind and its keys, following `add: NAME` through shape
-  // defines (the item's keys override the define's).
+  // defines (the item's keys override the define's). The defines followed
+  // are added to `visiting`: the caller keeps them there while it builds the
+  // shape's children, so that a define inside itself is caught.
   void collect_shape(const YAML::Node& item, std::string& kind, YAML::Node& kind_node, std::vector<Entry>& out,
                      std::set<std::string>& visiting, bool operand) const {
     auto es = entries(item, "a shape");
@@ -477,8 +533,8 @@ class Loader {
       fail(knode, "unknown shape '" + n + "'" + suggestion(n, names));
     }
     if (!visiting.insert(n).second) fail(knode, "circular define: shape '" + n + "' contains itself");
+    check_nesting(visiting.size(), knode, "shape defines");
     collect_shape(it->second.value, kind, kind_node, out, visiting, false);
-    visiting.erase(n);
     for (const Entry& e : own) {
       auto same = std::find_if(out.begin(), out.end(), [&](const Entry& o) { return o.key == e.key; });
       if (same != out.end()) *same = e;
@@ -556,11 +612,16 @@ class Loader {
     std::optional<TorusRadii> saved_;
   };
 
+
+  // `depth`: 1 for a scene item, one more inside each group or CSG.
   std::shared_ptr<Shape> shape(const YAML::Node& item, const Inherited& inh, std::set<std::string>& visiting,
-                               bool operand = false) const {
+                               std::size_t depth, bool operand = false) const {
+    check_nesting(depth, item, "groups and CSG");
+    count(shapes_made_, kMaxShapes, item, "shapes");
     std::string kind;
     YAML::Node kind_node;
     std::vector<Entry> es;
+    const std::set<std::string> outer_defines = visiting;
     collect_shape(item, kind, kind_node, es, visiting, operand);
     std::vector<std::string> allowed{"transform", "material", "shadow"};
     if (kind == "cylinder" || kind == "cone") allowed.insert(allowed.end(), {"min", "max", "closed"});
@@ -632,7 +693,7 @@ class Loader {
       auto g = std::make_shared<Group>();
       if (const Entry* c = find(es, "children")) {
         if (!c->value.IsSequence()) fail(c->value, "'children' must be a list of shapes, got " + describe(c->value));
-        for (const YAML::Node& child : c->value) g->add_child(shape(child, child_inh, visiting));
+        for (const YAML::Node& child : c->value) g->add_child(shape(child, child_inh, visiting, depth + 1));
       }
       s = g;
     } else if (kind == "csg") {
@@ -649,14 +710,15 @@ class Loader {
       const Entry* r = find(es, "right");
       if (!l || !r) fail(kind_node, std::string("a csg needs both 'left' and 'right' operands (missing '") +
                                         (!l ? "left" : "right") + "')");
-      auto left = shape(l->value, child_inh, visiting, true);
-      auto right = shape(r->value, child_inh, visiting, true);
+      auto left = shape(l->value, child_inh, visiting, depth + 1, true);
+      auto right = shape(r->value, child_inh, visiting, depth + 1, true);
       s = std::make_shared<Csg>(cop, std::move(left), std::move(right));
     } else if (kind == "obj") {
       const Entry& f = require(es, "file", kind_node, "an obj");
       const std::string file = name(f.value, "file");
       const std::filesystem::path p = resolve(file);
-      if (!std::filesystem::exists(p)) fail(f.value, "OBJ file '" + file + "' not found (looked for '" + p.string() + "')");
+      if (!std::filesystem::exists(p))
+        fail_not_found(f.value, "OBJ", file, p);
       try {
         s = load_obj(p);
       } catch (const std::exception& e) {
@@ -669,6 +731,7 @@ class Loader {
     // name none; their `shadow` applies to the whole subtree.
     if (kind == "obj" && has_material) apply_material_recursive(*s, material);
     if (has_shadow) set_shadow_recursive(*s, casts_shadow);
+    visiting = outer_defines;
     return s;
   }
 
@@ -682,6 +745,9 @@ class Loader {
   std::filesystem::path base_dir_;
   SceneLoadOptions options_;
   std::map<std::string, Define> defines_;
+  mutable std::size_t shapes_made_ = 0, patterns_made_ = 0;
+  // Composed transform defines by name (cleared whenever a define is added).
+  mutable std::map<std::string, Matrix4> transform_defines_;
   mutable std::optional<TorusRadii> material_torus_;                      // see MaterialTorus
   mutable std::map<std::string, std::shared_ptr<const Canvas>> images_;  // by canonical path
 };
@@ -705,6 +771,7 @@ Scene Loader::load(const YAML::Node& root) {
         def.extend = e->value;
       }
       defines_[n] = def;
+      transform_defines_.clear();
       continue;
     }
     const Entry* add = find(es, "add");
@@ -721,8 +788,8 @@ Scene Loader::load(const YAML::Node& root) {
       const Entry& h = require(es, "height", item, "a camera");
       c.width = integer(w.value);
       c.height = integer(h.value);
-      if (c.width <= 0 || c.width > kMaxImageSide) fail(w.value, "camera width must be in 1..16384, got " + w.value.Scalar());
-      if (c.height <= 0 || c.height > kMaxImageSide) fail(h.value, "camera height must be in 1..16384, got " + h.value.Scalar());
+      if (const std::string e = image_size_error(c.width, c.height); !e.empty())
+        fail(c.width < 1 || c.width > kMaxImageSide ? w.value : h.value, "camera " + e);
       const Entry& f = require(es, "field-of-view", item, "a camera");
       c.fov = number(f.value);
       if (!(c.fov > 0 && c.fov < std::numbers::pi)) fail(f.value, "field-of-view must be between 0 and pi radians, got " + f.value.Scalar());
@@ -760,7 +827,7 @@ Scene Loader::load(const YAML::Node& root) {
       }
     } else {
       std::set<std::string> visiting;
-      auto s = shape(item, Inherited{}, visiting);
+      auto s = shape(item, Inherited{}, visiting, 1);
       if (dynamic_cast<Group*>(s.get()) || dynamic_cast<Csg*>(s.get())) s->divide(kGroupBvhThreshold);
       world.objects.push_back(std::move(s));
     }
@@ -777,7 +844,9 @@ std::string format_yaml_error(const std::string& source, const YAML::Exception& 
   os << source << ':';
   if (e.mark.line >= 0) os << e.mark.line + 1 << ':' << e.mark.column + 1 << ": ";
   else os << ' ';
-  os << "YAML syntax error: " << e.msg;
+  // yaml-cpp's depth guard says "bad file"; say what it means.
+  if (dynamic_cast<const YAML::DeepRecursion*>(&e)) os << "YAML syntax error: lists or maps nested too deeply";
+  else os << "YAML syntax error: " << e.msg;
   return os.str();
 }
 
@@ -799,6 +868,9 @@ Scene load_scene_from_string(const std::string& text, const std::string& source,
 }
 
 Scene load_scene(const std::string& path, const SceneLoadOptions& options) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw SceneError("cannot read scene '" + path + "': not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError("cannot read scene '" + path + "': " + std::strerror(errno));
   std::ostringstream ss;

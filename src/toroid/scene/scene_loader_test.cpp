@@ -304,6 +304,50 @@ TEST_F(SceneFiles, Errors) {
   expect_error(kCamera + "- add: sphere\n  material: {color: [1, 0, 0]\n", "13:1: YAML syntax error");
   expect_error(kCamera + "- add: obj\n  file: missing.obj\n", "12:9: OBJ file 'missing.obj' not found");
   expect_error(kCamera + "- add: torus\n  solver: bogus\n", "12:11: unknown solver 'bogus'");
+  expect_error(kCamera + "- add: sphere\n  transform: [translate, 1, 2, 3]\n",
+               "12:14: each transform operation is a list of its own");
+  expect_error(kCamera + "- add: cube\n  transform:\n    - [scale, 1e999, 1, 1]\n", "13:15: number out of range: '1e999'");
+  expect_error(kCamera + "- add: sphere\n  material:\n    refractive-index: -1\n", "13:23: refractive-index must be > 0");
+  expect_error(kCamera + "- add: sphere\n  transform: " + std::string(1000, '[') + std::string(1000, ']') + "\n",
+               "12:2014: YAML syntax error: lists or maps nested too deeply");
+  expect_error("- add: camera\n  width: 16384\n  height: 8192\n  field-of-view: 0.8\n  from: [0, 2, -5]\n"
+               "  to: [0, 0, 0]\n  up: [0, 1, 0]\n",
+               "3:11: camera 16384x8192 is 134217728 pixels, more than the limit of 67108864 (8192x8192)");
+}
+
+TEST_F(SceneFiles, DefinesInsideThemselvesAreCaughtThroughGroups) {
+  expect_error(kCamera + "- define: nest\n  value:\n    add: group\n    children:\n      - add: nest\n- add: nest\n",
+               "15:14: circular define: shape 'nest' contains itself");
+}
+
+TEST_F(SceneFiles, GroupsNestSixtyFourDeep) {
+  auto nested = [](int depth) {
+    std::string s, indent;
+    for (int i = 0; i < depth - 1; ++i, indent += "    ") s += indent + "- add: group\n" + indent + "  children:\n";
+    return s + indent + "- add: sphere\n";
+  };
+  EXPECT_EQ(error_of(kCamera + nested(64)), "");
+  EXPECT_NE(error_of(kCamera + nested(65)).find("groups and CSG nested more than 64 deep"), std::string::npos);
+}
+
+TEST_F(SceneFiles, DefinesThatMultiplyShapesStopAtTheLimit) {
+  // Each define holds two of the one before: 2^17 spheres > 100000.
+  std::string text = kCamera + "- define: s0\n  value:\n    add: sphere\n";
+  for (int i = 1; i <= 17; ++i)
+    text += "- define: s" + std::to_string(i) + "\n  value:\n    add: group\n    children: [{add: s" +
+            std::to_string(i - 1) + "}, {add: s" + std::to_string(i - 1) + "}]\n";
+  text += "- add: s17\n";
+  EXPECT_NE(error_of(text).find("the scene makes more than 100000 shapes"), std::string::npos);
+}
+
+TEST_F(SceneFiles, AFolderIsNotAScene) {
+  const std::string d = dir_.string();
+  try {
+    load_scene(d);
+    ADD_FAILURE();
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot read scene '" + d + "': not a regular file");
+  }
 }
 
 }  // namespace

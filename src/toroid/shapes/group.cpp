@@ -108,9 +108,10 @@ void Group::divide(std::size_t threshold) {
       // Beyond the book: the children that straddle the split stay here in
       // the book's version, and in a large mesh every ray that enters this
       // box tests them all. When there are several, they go into a subgroup
-      // of their own too (a thin slab that divides well); there are fewer of
-      // them than `count`, so the recursion still ends.
-      if (children_.size() > 1 && children_.size() >= threshold) {
+      // of their own too (a thin slab that divides well) -- unless every
+      // child straddles (identical triangles, say): that subgroup would be
+      // this group again and the recursion would never end.
+      if (children_.size() > 1 && children_.size() >= threshold && children_.size() < count) {
         ShapeList straddling = std::move(children_);
         children_.clear();
         attach(subgroup_of(std::move(straddling)));

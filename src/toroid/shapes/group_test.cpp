@@ -247,6 +247,16 @@ TEST(Groups, DividingKeepsEveryIntersection) {
   }
 }
 
+// Found by fuzzing the OBJ loader: copies of one triangle all straddle every
+// split, and dividing them used to recurse until the stack overflowed.
+TEST(Groups, DividingChildrenThatAllStraddleTheSplitEnds) {
+  Group g;
+  for (int i = 0; i < 6; ++i)
+    g.add_child(std::make_shared<Triangle>(point(-1, 0, 0), point(1, 0, 0), point(0, 1, 0)));
+  g.divide(4);
+  EXPECT_EQ(g.size(), 6u);  // nothing separates them: they stay together
+}
+
 TEST(Groups, AGroupHasNoNormalOfItsOwn) {
   const Group g;
   EXPECT_THROW(g.local_normal_at(point(0, 0, 0), {}), std::logic_error);
