@@ -15,6 +15,7 @@
 
 #include "toroid/render/intersection.h"
 #include "toroid/render/ray.h"
+#include "toroid/shapes/bounds.h"
 
 namespace toroid {
 
@@ -62,6 +63,7 @@ class ShapeBvh {
   };
   struct Item;
 
+  std::size_t split(std::vector<Item>& items, std::size_t begin, std::size_t end, const BoundingBox& centres);
   std::uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end);
   template <typename Stop>
   bool walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const;
