@@ -55,9 +55,9 @@ std::string write_png(const Canvas& canvas, FILE* f) {
   png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), 8, PNG_COLOR_TYPE_RGB,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-  // zlib's fastest level with the one adaptive filter that suits rendered
-  // images: a few percent larger than the default, several times faster to
-  // write (docs/performance.md).
+  // zlib's fastest level with the Paeth filter: several times faster to
+  // write than libpng's defaults (a 1600x1600 image: 0.65 s -> 0.11 s), for
+  // larger files (bagels.png, 800x600: 138 KB -> 195 KB).
   png_set_compression_level(png, 1);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_PAETH);
   png_write_info(png, info);
