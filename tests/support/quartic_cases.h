@@ -4,6 +4,7 @@
 // refined with MPFR (tests/support/mp_poly.h).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -98,6 +99,22 @@ inline std::vector<QuarticCase> random_cases(int count, unsigned seed, double ga
     out.push_back(from_roots("random " + std::to_string(out.size()), a, real, pairs, TianhengCase::DeltaNegative));
   }
   return out;
+}
+
+// The random sweep both closed forms run: every case's roots must match the
+// MPFR reference within `tol`; returns the largest relative error seen, or
+// the first mismatch as a failure.
+template <typename Solve>
+::testing::AssertionResult random_sweep(Solve solve, double tol, double* worst) {
+  *worst = 0;
+  for (const QuarticCase& q : random_cases(600, 20190101)) {
+    double r[4];
+    const int n = solve(q, r);
+    ::testing::AssertionResult match = RootsMatch(r, n, q.want, tol);
+    if (!match) return match << " (" << q.name << ")";
+    if (n) *worst = std::max(*worst, max_rel_error(r, q.want));
+  }
+  return ::testing::AssertionSuccess();
 }
 
 }  // namespace toroid::testing

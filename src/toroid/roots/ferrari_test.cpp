@@ -60,12 +60,7 @@ TEST(Ferrari, NegativeLeadingCoefficientAndScale) {
 
 TEST(Ferrari, RandomSweepAgainstMpfr) {
   double worst = 0;
-  for (const QuarticCase& q : testing::random_cases(600, 20190101)) {
-    double r[4];
-    const int n = solve(q, r);
-    ASSERT_TRUE(RootsMatch(r, n, q.want, kTolSweep)) << q.name;
-    if (n) worst = std::max(worst, testing::max_rel_error(r, q.want));
-  }
+  ASSERT_TRUE(testing::random_sweep(solve, kTolSweep, &worst));
   std::printf("ferrari random sweep: max relative error %.3g\n", worst);
   RecordProperty("max_rel_error", std::to_string(worst));
 }

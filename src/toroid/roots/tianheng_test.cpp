@@ -161,12 +161,7 @@ TEST(Tianheng, HugeAndTinyCoefficientsAreScaledExactly) {
 
 TEST(Tianheng, RandomSweepAgainstMpfr) {
   double worst = 0;
-  for (const QuarticCase& q : testing::random_cases(600, 20190101)) {
-    double r[4];
-    const int n = solve(q, r);
-    ASSERT_TRUE(RootsMatch(r, n, q.want, kTolSweep)) << q.name;
-    if (n) worst = std::max(worst, testing::max_rel_error(r, q.want));
-  }
+  ASSERT_TRUE(testing::random_sweep(solve, kTolSweep, &worst));
   std::printf("tianheng random sweep: max relative error %.3g\n", worst);
   RecordProperty("max_rel_error", std::to_string(worst));
 }

@@ -173,12 +173,12 @@ double solve_monotone(const F& f, double lo, double hi, bool lo_negative, double
   return x;
 }
 
-// A first guess inside (lo, hi): the Newton step from `from` if it lands
-// inside, else the midpoint.
+// A first guess inside (lo, hi): Halley's step from `from` if it lands
+// inside, else Newton's, else the midpoint.
 double first_guess(const Sample& from, double lo, double hi) {
+  const double halley = from.s - 2 * from.h * from.dh / (2 * from.dh * from.dh - from.h * from.d2h);
+  if (halley > lo && halley < hi) return halley;
   const double newton = from.s - from.h / from.dh;
-  const double x = from.s - 2 * from.h * from.dh / (2 * from.dh * from.dh - from.h * from.d2h);
-  if (x > lo && x < hi) return x;
   return newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
 }
 
