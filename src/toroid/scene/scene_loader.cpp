@@ -952,11 +952,15 @@ Scene load_scene(const std::string& path, const SceneLoadOptions& options) {
     throw SceneError("cannot read scene '" + path + "': not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError("cannot read scene '" + path + "': " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
+  // Into one string of the file's size: a stringstream and its str() would
+  // hold the text two or three times over at the peak (issue 6).
+  std::string text;
+  if (const auto size = std::filesystem::file_size(path, ec); !ec) text.reserve(size);
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) text.append(chunk, static_cast<std::size_t>(in.gcount()));
   if (in.bad()) throw SceneError("cannot read scene '" + path + "': read error");
   const auto dir = std::filesystem::path(path).parent_path();
-  return load_scene_from_string(ss.str(), path, dir.empty() ? std::filesystem::path(".") : dir, options);
+  return load_scene_from_string(text, path, dir.empty() ? std::filesystem::path(".") : dir, options);
 }
 
 }  // namespace toroid
