@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Memory per torus (issue 6): peak RSS of `toroid render` (8x8 pixels) on
 # scenes of 1 and 10,001 tori, and the heap a loaded scene keeps per torus
-# (build/bench/scene_memory_bench). Peak RSS includes yaml-cpp's document,
-# which is freed once the scene is built; the heap figure does not.
+# (build/bench/scene_memory_bench). Peak RSS includes the scene file's text
+# and yaml-cpp's nodes of one top-level item at a time (the loader never
+# holds the whole document's), both freed once the scene is built; the heap
+# figure does not.
 #   bench/memory.sh
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -29,5 +31,5 @@ tori 1 >"$work/1.yaml"
 tori 10001 >"$work/10001.yaml"
 r1=$(rss "$work/1.yaml")
 r2=$(rss "$work/10001.yaml")
-echo "peak RSS, toroid render 8x8: 1 torus ${r1} KiB, 10,001 tori ${r2} KiB: $(( (r2 - r1) * 1024 / 10000 )) bytes per torus (YAML document included)"
+echo "peak RSS, toroid render 8x8: 1 torus ${r1} KiB, 10,001 tori ${r2} KiB: $(( (r2 - r1) * 1024 / 10000 )) bytes per torus (scene text included)"
 "$root/build/bench/scene_memory_bench" 2>/dev/null | tail -1

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <functional>
 #include <numbers>
 #include <optional>
 #include <cmath>
@@ -23,6 +24,7 @@
 #include "toroid/render/pattern.h"
 #include "toroid/render/texture_map.h"
 #include "toroid/scene/obj_file.h"
+#include "toroid/scene/yaml_items.h"
 #include "toroid/shapes/cone.h"
 #include "toroid/shapes/csg.h"
 #include "toroid/shapes/cube.h"
@@ -84,13 +86,19 @@ class Loader {
   Loader(std::string source, std::filesystem::path base_dir, const SceneLoadOptions& options)
       : source_(std::move(source)), base_dir_(std::move(base_dir)), options_(options) {}
 
+  // The whole document's node tree.
   Scene load(const YAML::Node& root);
+  // Item by item (yaml_items.h); nullopt when an item does not load alone:
+  // then load the whole document, which gives the same scene or message.
+  std::optional<Scene> load(const YamlItems& items);
 
  private:
   struct Define {
     YAML::Node name_node;
     YAML::Node value;
     std::optional<YAML::Node> extend;
+    YAML::Node item;  // the scene item that defines it (see file_mark)
+    int item_line = 0;
   };
   struct CameraParams {
     int width = 0, height = 0;
@@ -106,7 +114,34 @@ class Loader {
     os << what;
     throw SceneError(os.str());
   }
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& what) const { fail(node.Mark(), what); }
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& what) const { fail(file_mark(node), what); }
+
+  // Loaded item by item, a node's mark counts lines from its item's first
+  // line: the current item's or, for a define's node, the define's. Only
+  // errors need it, so the item is found by searching.
+  YAML::Mark file_mark(const YAML::Node& node) const {
+    YAML::Mark mark = node.Mark();
+    if (!item_by_item_ || mark.is_null()) return mark;
+    int line = item_line_;
+    if (!(item_ && contains(*item_, node)))
+      for (const auto& [_, d] : defines_)
+        if (contains(d.item, node)) line = d.item_line;
+    mark.line += line;
+    return mark;
+  }
+  static bool contains(const YAML::Node& tree, const YAML::Node& node) {
+    if (tree.is(node)) return true;
+    if (tree.IsSequence())
+      for (const YAML::Node& child : tree)
+        if (contains(child, node)) return true;
+    if (tree.IsMap())
+      for (const auto& entry : tree)
+        if (contains(entry.first, node) || contains(entry.second, node)) return true;
+    return false;
+  }
+  // Builds the scene from its items, which `next_item` gives in order
+  // (nullopt after the last); `list` is the top-level list's mark.
+  Scene build(const std::function<std::optional<YAML::Node>()>& next_item, const YAML::Mark& list);
 
   static std::string describe(const YAML::Node& n) {
     switch (n.Type()) {
@@ -742,6 +777,9 @@ class Loader {
   }
 
   std::string source_;
+  bool item_by_item_ = false;
+  std::optional<YAML::Node> item_;  // item by item: the current item and its first line
+  int item_line_ = 0;
   std::filesystem::path base_dir_;
   SceneLoadOptions options_;
   std::map<std::string, Define> defines_;
@@ -755,17 +793,48 @@ class Loader {
 Scene Loader::load(const YAML::Node& root) {
   if (!root || root.IsNull()) fail(YAML::Mark{}, "empty scene: expected a list of items ('- add: camera', ...)");
   if (!root.IsSequence()) fail(root, "a scene must be a list of items ('- add: ...' or '- define: ...'), got " + describe(root));
+  auto it = root.begin();
+  return build([&]() -> std::optional<YAML::Node> {
+    if (it == root.end()) return std::nullopt;
+    return *it++;
+  }, root.Mark());
+}
+
+std::optional<Scene> Loader::load(const YamlItems& items) {
+  struct NeedsWholeDocument {};
+  item_by_item_ = true;
+  std::size_t next = 0;
+  try {
+    return build([&]() -> std::optional<YAML::Node> {
+      if (next == items.items.size()) return std::nullopt;
+      const YamlItemText& text = items.items[next++];
+      std::optional<YAML::Node> item = load_item(text);
+      if (!item) throw NeedsWholeDocument{};
+      item_.emplace(*item);  // not operator=: a YAML::Node assigned to rewrites the node it held
+      item_line_ = text.first_line;
+      return item;
+    }, items.list);
+  } catch (const NeedsWholeDocument&) {
+    return std::nullopt;
+  } catch (const YAML::Exception&) {
+    return std::nullopt;  // the whole document's load reports it with its own mark
+  }
+}
+
+Scene Loader::build(const std::function<std::optional<YAML::Node>()>& next_item, const YAML::Mark& list) {
   World world;
   std::optional<CameraParams> cam;
   YAML::Node cam_node;
-  for (const YAML::Node& item : root) {
+  while (const std::optional<YAML::Node> next = next_item()) {
+    const YAML::Node& item = *next;
     const auto es = entries(item, "a scene item");
     if (const Entry* d = find(es, "define")) {
       check_keys(es, {"define", "value", "extend"}, "a define");
       const std::string n = name(d->value, "a define");
       if (is_builtin(n) || n == "camera" || n == "light") fail(d->value, "cannot redefine the built-in '" + n + "'");
       const Entry& v = require(es, "value", item, "a define");
-      Define def{d->value, v.value, std::nullopt};
+      // A whole document's item stays out: assigning defines_[n] would rewrite it.
+      Define def{d->value, v.value, std::nullopt, item_by_item_ ? item : YAML::Node(), item_line_};
       if (const Entry* e = find(es, "extend")) {
         name(e->value, "'extend'");
         def.extend = e->value;
@@ -832,7 +901,7 @@ Scene Loader::load(const YAML::Node& root) {
       world.objects.push_back(std::move(s));
     }
   }
-  if (!cam) fail(root, "the scene has no camera (add one with '- add: camera')");
+  if (!cam) fail(list, "the scene has no camera (add one with '- add: camera')");
   Camera camera(cam->width, cam->height, cam->fov);
   camera.set_transform(view_transform(cam->from, cam->to, cam->up));
   index_objects(world);
@@ -854,6 +923,16 @@ std::string format_yaml_error(const std::string& source, const YAML::Exception& 
 
 Scene load_scene_from_string(const std::string& text, const std::string& source, const std::filesystem::path& base_dir,
                              const SceneLoadOptions& options) {
+  if (!options.whole_document) {
+    std::optional<YamlItems> items;
+    try {
+      items = split_items(text);
+    } catch (const YAML::Exception& e) {
+      throw SceneError(format_yaml_error(source, e));
+    }
+    if (items)
+      if (std::optional<Scene> scene = Loader(source, base_dir, options).load(*items)) return std::move(*scene);
+  }
   YAML::Node root;
   try {
     root = YAML::Load(text);
@@ -873,11 +952,15 @@ Scene load_scene(const std::string& path, const SceneLoadOptions& options) {
     throw SceneError("cannot read scene '" + path + "': not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError("cannot read scene '" + path + "': " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
+  // Into one string of the file's size: a stringstream and its str() would
+  // hold the text two or three times over at the peak (issue 6).
+  std::string text;
+  if (const auto size = std::filesystem::file_size(path, ec); !ec) text.reserve(size);
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0) text.append(chunk, static_cast<std::size_t>(in.gcount()));
   if (in.bad()) throw SceneError("cannot read scene '" + path + "': read error");
   const auto dir = std::filesystem::path(path).parent_path();
-  return load_scene_from_string(ss.str(), path, dir.empty() ? std::filesystem::path(".") : dir, options);
+  return load_scene_from_string(text, path, dir.empty() ? std::filesystem::path(".") : dir, options);
 }
 
 }  // namespace toroid

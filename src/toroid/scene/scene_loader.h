@@ -27,6 +27,10 @@ struct Scene {
 struct SceneLoadOptions {
   // When set, every torus uses this solver (its own `solver:` key is ignored).
   std::optional<QuarticSolver> solver;
+  // Build yaml-cpp's node tree of the whole document at once rather than of
+  // one top-level item at a time: the same scene or error, more memory
+  // (for tests that compare the two).
+  bool whole_document = false;
 };
 
 // Reads and builds the scene. Throws SceneError.

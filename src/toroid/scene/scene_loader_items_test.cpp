@@ -1,0 +1,133 @@
+// Loading a scene one top-level item at a time (the default) against loading
+// its whole YAML document: positions in messages are the file's, and the
+// documents that are loaded whole (flow lists, aliases) still load.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "toroid/scene/scene_loader.h"
+#include "toroid/shapes/shape.h"
+
+namespace toroid {
+namespace {
+
+// The message of the SceneError that loading `text` throws ("" when it loads).
+std::string error_of(const std::string& text, bool whole_document) {
+  SceneLoadOptions options;
+  options.whole_document = whole_document;
+  try {
+    load_scene_from_string(text, "s.yml", ".", options);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_error_both_ways(const std::string& text, const std::string& message) {
+  EXPECT_EQ(error_of(text, false), message) << "item by item";
+  EXPECT_EQ(error_of(text, true), message) << "whole document";
+}
+
+const std::string kCamera =
+    "- add: camera\n"            // 1
+    "  width: 8\n"               // 2
+    "  height: 6\n"              // 3
+    "  field-of-view: 0.8\n"     // 4
+    "  from: [0, 2, -5]\n"       // 5
+    "  to: [0, 0, 0]\n"          // 6
+    "  up: [0, 1, 0]\n"          // 7
+    "# the light\n"              // 8
+    "- add: light\n"             // 9
+    "  at: [-10, 10, -10]\n"     // 10
+    "  intensity: [1, 1, 1]\n";  // 11
+
+TEST(SceneLoaderItems, AnErrorInTheThirdItemHasItsFileLineAndColumn) {
+  expect_error_both_ways(kCamera +
+                             "\n"                             // 12
+                             "- add: sphere\n"                // 13
+                             "  material:\n"                  // 14
+                             "    specular: 0.5\n"            // 15
+                             "    color: [1, 0, red]\n",      // 16
+                         "s.yml:16:19: expected a number, got 'red'");
+  // Indented list, an item's key at another column.
+  expect_error_both_ways("  -   add: light\n"
+                         "      at: [0, 0, 0]\n"
+                         "      intensity: [1, 1, 1]\n"
+                         "  -   add: sphere\n"
+                         "  -     add: cube\n"
+                         "        shadw: false\n",
+                         "s.yml:6:9: unknown key 'shadw' in a cube (did you mean 'shadow'?)");
+}
+
+TEST(SceneLoaderItems, AnErrorInADefineHasTheDefinesPositionWhereALaterItemUsesIt) {
+  const std::string defines = kCamera +
+                              "- define: base\n"            // 12
+                              "  value:\n"                  // 13
+                              "    ambient: 0.2\n"          // 14
+                              "    colr: [1, 0, 0]\n"       // 15
+                              "- define: shiny\n"           // 16
+                              "  extend: base\n"            // 17
+                              "  value:\n"                  // 18
+                              "    specular: 1\n"           // 19
+                              "- define: turn\n"            // 20
+                              "  value:\n"                  // 21
+                              "    - [rotate-y, 1, 2]\n";   // 22
+  expect_error_both_ways(defines +
+                             "- add: sphere\n"              // 23
+                             "  material: shiny\n",         // 24
+                         "s.yml:15:5: unknown key 'colr' in a material (did you mean 'color'?)");
+  expect_error_both_ways(defines +
+                             "- add: sphere\n"              // 23
+                             "  transform: [turn]\n",       // 24
+                         "s.yml:22:7: 'rotate-y' takes 1 number, got 2");
+  // The using item's own node, after the defines' items.
+  expect_error_both_ways(defines +
+                             "- add: sphere\n"              // 23
+                             "  material: shiney\n",        // 24
+                         "s.yml:24:13: undefined material 'shiney' (did you mean 'shiny'?)");
+}
+
+TEST(SceneLoaderItems, AnErrorAboutTheWholeListHasTheListsPosition) {
+  expect_error_both_ways("# no camera\n"
+                         "  - add: light\n"
+                         "    at: [0, 0, 0]\n"
+                         "    intensity: [1, 1, 1]\n",
+                         "s.yml:2:3: the scene has no camera (add one with '- add: camera')");
+}
+
+TEST(SceneLoaderItems, AFlowListLoads) {
+  const Scene s = load_scene_from_string(
+      "[{add: camera, width: 8, height: 6, field-of-view: 0.8, from: [0, 2, -5], to: [0, 0, 0], up: [0, 1, 0]},\n"
+      " {add: light, at: [-10, 10, -10], intensity: [1, 1, 1]},\n"
+      " {add: sphere, material: {color: [0.5, 0.25, 1]}}]\n",
+      "s.yml", ".");
+  ASSERT_EQ(s.world.objects.size(), 1u);
+  EXPECT_TRUE(approx_equal(s.world.objects[0]->material.color, Color{0.5, 0.25, 1}));
+  EXPECT_EQ(error_of("[{add: light, at: [0, 0, 0], intensity: [1, 1, 1]},\n {add: cub}]\n", false),
+            "s.yml:2:8: unknown shape 'cub' (did you mean 'cube'?)");
+}
+
+TEST(SceneLoaderItems, AnAliasToAnAnchorInAnotherItemLoads) {
+  const Scene s = load_scene_from_string(kCamera +
+                                             "- add: sphere\n"
+                                             "  material: &red\n"
+                                             "    color: [1, 0, 0]\n"
+                                             "- add: cube\n"
+                                             "  material: *red\n",
+                                         "s.yml", ".");
+  ASSERT_EQ(s.world.objects.size(), 2u);
+  EXPECT_TRUE(approx_equal(s.world.objects[0]->material.color, Color{1, 0, 0}));
+  EXPECT_TRUE(approx_equal(s.world.objects[1]->material.color, Color{1, 0, 0}));
+}
+
+TEST(SceneLoaderItems, ASyntaxErrorAfterABadItemIsReportedFirstAsBefore) {
+  // The whole text is parsed before any item is built.
+  expect_error_both_ways(kCamera +
+                             "- add: spher\n"          // 12
+                             "- add: cube\n"           // 13
+                             "  transform: [[\n",      // 14
+                         "s.yml:15:1: YAML syntax error: end of sequence flow not found");
+}
+
+}  // namespace
+}  // namespace toroid

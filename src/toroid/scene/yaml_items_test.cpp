@@ -1,0 +1,113 @@
+#include "toroid/scene/yaml_items.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace toroid {
+namespace {
+
+TEST(SplitItems, FindsEachItemsLinesFromItsDashToTheNextItem) {
+  const std::string text =
+      "# a scene\n"
+      "\n"
+      "- add: camera\n"
+      "  width: 8\n"
+      "# between items\n"
+      "\n"
+      "-   add: light\n"
+      "- add: sphere\n";
+  const auto items = split_items(text);
+  ASSERT_TRUE(items);
+  EXPECT_EQ(items->list.line, 2);
+  EXPECT_EQ(items->list.column, 0);
+  ASSERT_EQ(items->items.size(), 3u);
+  EXPECT_EQ(items->items[0].text, "- add: camera\n  width: 8\n# between items\n\n");
+  EXPECT_EQ(items->items[0].first_line, 2);
+  EXPECT_EQ(items->items[0].column, 2);
+  EXPECT_EQ(items->items[1].text, "-   add: light\n");
+  EXPECT_EQ(items->items[1].first_line, 6);
+  EXPECT_EQ(items->items[1].column, 4);
+  EXPECT_EQ(items->items[2].text, "- add: sphere\n");
+  EXPECT_EQ(items->items[2].first_line, 7);
+}
+
+TEST(SplitItems, TakesAnIndentedListAndAFlowValueSpanningLines) {
+  const auto items = split_items("  - a: [1,\n2]\n  - b\n");
+  ASSERT_TRUE(items);
+  EXPECT_EQ(items->list.column, 2);
+  ASSERT_EQ(items->items.size(), 2u);
+  EXPECT_EQ(items->items[0].text, "  - a: [1,\n2]\n");
+  EXPECT_EQ(items->items[0].column, 4);
+  EXPECT_EQ(items->items[1].text, "  - b\n");
+  EXPECT_EQ(items->items[1].first_line, 2);
+}
+
+TEST(SplitItems, LeavesEveryOtherDocumentToBeLoadedWhole) {
+  const char* const whole[] = {
+      "",                                        // empty
+      "# only a comment\n",                      // empty
+      "[{add: camera}, {add: sphere}]\n",        // a flow list
+      "add: camera\n",                           // a map
+      "camera\n",                                // a scalar
+      "- &m {color: [1, 0, 0]}\n- *m\n",         // an alias
+      "- add: sphere\n  material: &m {}\n- {add: cube, material: *m}\n",  // an alias in an item
+      "-\n  add: camera\n",                      // the item's node is below its '-'
+      "- a\n-\n- c\n",                           // an empty item
+      "- a\n---\n- b\n",                         // a second document
+      "- a\n...\n",                              // the end of the document
+      "\xEF\xBB\xBF- a\n- b\n",                  // a byte-order mark
+  };
+  for (const char* text : whole) {
+    SCOPED_TRACE(text);
+    EXPECT_FALSE(split_items(text));
+  }
+}
+
+// The same exception, message and mark, as YAML::Load.
+TEST(SplitItems, ThrowsSyntaxErrorsAsYamlLoadDoes) {
+  const char* const bad[] = {
+      "- add: camera\n  width: 8\n- add: [1, 2\n- add: light\n",
+      "- add: camera\n   width: 8\n  height: 6\n",
+      "--- - a\n",
+  };
+  for (const char* text : bad) {
+    SCOPED_TRACE(text);
+    std::string expected;
+    try {
+      YAML::Load(text);
+      ADD_FAILURE() << "YAML::Load accepted it";
+    } catch (const YAML::Exception& e) {
+      expected = e.what();
+    }
+    try {
+      split_items(text);
+      ADD_FAILURE() << "split_items accepted it";
+    } catch (const YAML::Exception& e) {
+      EXPECT_EQ(std::string(e.what()), expected);
+    }
+  }
+}
+
+TEST(LoadItem, GivesTheItemsNodeWithMarksCountedFromItsFirstLine) {
+  const auto items = split_items("- add: camera\n- add: sphere\n  material:\n    color: [1, 0, 0]\n");
+  ASSERT_TRUE(items);
+  ASSERT_EQ(items->items.size(), 2u);
+  const auto sphere = load_item(items->items[1]);
+  ASSERT_TRUE(sphere);
+  EXPECT_EQ((*sphere)["add"].Scalar(), "sphere");
+  const YAML::Mark color = (*sphere)["material"]["color"].Mark();
+  EXPECT_EQ(items->items[1].first_line + color.line, 3);  // the file's line
+  EXPECT_EQ(color.column, 11);
+}
+
+TEST(LoadItem, RefusesTextThatIsNotThatOneItem) {
+  EXPECT_FALSE(load_item({"- a\n- b\n", 0, 2}));     // two items
+  EXPECT_FALSE(load_item({"a: b\n", 0, 0}));         // no list
+  EXPECT_FALSE(load_item({"- a\n", 0, 4}));          // not at the expected column
+  EXPECT_FALSE(load_item({"- [a\n", 0, 2}));         // a syntax error
+  EXPECT_TRUE(load_item({"- a\n", 0, 2}));
+}
+
+}  // namespace
+}  // namespace toroid
