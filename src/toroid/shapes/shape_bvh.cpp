@@ -89,7 +89,7 @@ namespace {
 
 // Whether `s` or a shape below it refracts.
 bool has_transparent(const Shape& s) {
-  if (s.material.transparency > 0) return true;
+  if (s.material().transparency > 0) return true;
   if (const auto* g = dynamic_cast<const Group*>(&s))
     for (const auto& child : g->children())
       if (has_transparent(*child)) return true;

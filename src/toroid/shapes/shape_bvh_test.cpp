@@ -126,7 +126,9 @@ TEST(ShapeBvh, KnowsWhetherSomethingBelowRefracts) {
   EXPECT_FALSE(ShapeBvh(shapes).any_transparent());
   auto g = std::dynamic_pointer_cast<Group>(shapes[shapes.size() - 2]);
   ASSERT_TRUE(g);
-  g->children()[0]->material.transparency = 0.5;
+  Material glass;
+  glass.transparency = 0.5;
+  g->children()[0]->set_material(glass);
   EXPECT_TRUE(ShapeBvh(shapes).any_transparent());
 }
 
