@@ -27,10 +27,12 @@ struct Affine {
   }
 
   // Points (w = 1) get the translation, vectors (w = 0) do not; w is kept.
-  constexpr Tuple operator*(const Tuple& t) const {
-    return {m[0][0] * t.x + m[0][1] * t.y + m[0][2] * t.z + m[0][3] * t.w,
-            m[1][0] * t.x + m[1][1] * t.y + m[1][2] * t.z + m[1][3] * t.w,
-            m[2][0] * t.x + m[2][1] * t.y + m[2][2] * t.z + m[2][3] * t.w, t.w};
+  constexpr Tuple operator*(const Tuple& t) const { return {row(0, t), row(1, t), row(2, t), t.w}; }
+
+  // One component of (*this) * t, for callers that need only one (a
+  // plane's height).
+  constexpr double row(int i, const Tuple& t) const {
+    return m[i][0] * t.x + m[i][1] * t.y + m[i][2] * t.z + m[i][3] * t.w;
   }
 
   // The transpose of the linear (3x3) part times the xyz of v, as a vector:

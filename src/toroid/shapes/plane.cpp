@@ -5,9 +5,9 @@
 namespace toroid {
 
 int Plane::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
-  // Parallel or coplanar rays miss: a coplanar ray would see only the edge.
-  if (std::abs(ray.direction.y) < kEpsilon) return 0;
-  hits[0] = {-ray.origin.y / ray.direction.y, this};
+  double t;
+  if (!hit_at(ray.origin.y, ray.direction.y, t)) return 0;
+  hits[0] = {t, this};
   return 1;
 }
 

@@ -1,6 +1,8 @@
 // The xz plane, y = 0 in object space (RTC chapter 9).
 #pragma once
 
+#include <cmath>
+
 #include "toroid/shapes/primitive.h"
 
 namespace toroid {
@@ -12,6 +14,16 @@ class Plane : public Primitive<Plane> {
     return {point(-BoundingBox::kInf, 0, -BoundingBox::kInf), point(BoundingBox::kInf, 0, BoundingBox::kInf)};
   }
   int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
+
+  // Where a ray meets y = 0, given only the y of its object-space origin and
+  // direction. Parallel or coplanar rays miss (a coplanar ray would see only
+  // the edge). find_hits and the world index's plane test (which computes
+  // just these two numbers from the inverse transform) share it.
+  static bool hit_at(double origin_y, double direction_y, double& t) {
+    if (std::abs(direction_y) < kEpsilon) return false;
+    t = -origin_y / direction_y;
+    return true;
+  }
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };
 

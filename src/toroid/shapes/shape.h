@@ -37,6 +37,7 @@ class Shape {
   // from it, for setup-time uses (bounds).
   Matrix4 transform() const { return inverse(inverse_.to_matrix()); }
   Matrix4 inverse_transform() const { return inverse_.to_matrix(); }
+  const Affine& inverse_affine() const { return inverse_; }
   // Precondition: is_invertible(m) and m is affine (bottom row 0 0 0 1).
   void set_transform(const Matrix4& m);
 

@@ -8,8 +8,7 @@
 #include <utility>
 
 #include "toroid/shapes/bounds.h"
-#include "toroid/shapes/csg.h"
-#include "toroid/shapes/group.h"
+#include "toroid/shapes/plane.h"
 #include "toroid/shapes/shape.h"
 
 namespace toroid {
@@ -52,6 +51,14 @@ struct SlabRay {
         t_min(from) {}
 };
 
+// Plane::find_hits for a ray in the plane's parent space, computing only the
+// y of the ray's origin and direction in object space (bit for bit what the
+// whole transform would give).
+bool plane_hit(const Plane& p, const Ray& ray, double& t) {
+  const Affine& a = p.inverse_affine();
+  return Plane::hit_at(a.row(1, ray.origin), a.row(1, ray.direction), t);
+}
+
 }  // namespace
 
 struct ShapeBvh::Item {
@@ -85,30 +92,19 @@ bool enters(const Node& n, const SlabRay& r, double t_max, double& entry) {
 
 }  // namespace
 
-namespace {
-
-// Whether `s` or a shape below it refracts.
-bool has_transparent(const Shape& s) {
-  if (s.material().transparency > 0) return true;
-  if (const auto* g = dynamic_cast<const Group*>(&s))
-    for (const auto& child : g->children())
-      if (has_transparent(*child)) return true;
-  if (const auto* c = dynamic_cast<const Csg*>(&s)) return has_transparent(*c->left()) || has_transparent(*c->right());
-  return false;
-}
-}  // namespace
-
 ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shapes.size()) {
   static std::atomic<std::uint64_t> next_serial{1};
   serial_ = next_serial++;
   std::vector<Item> items;
   items.reserve(shapes.size());
   for (const auto& s : shapes) {
-    if (has_transparent(*s)) any_transparent_ = true;
     const BoundingBox b = s->parent_space_bounds();
     if (b.empty()) continue;  // nothing to hit (an empty group)
     if (!is_bounded(b)) {
-      unbounded_.push_back(s.get());
+      if (const auto* p = dynamic_cast<const Plane*>(s.get()))
+        planes_.push_back(p);
+      else
+        unbounded_.push_back(s.get());
       continue;
     }
     Item it{b, {(b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2, (b.min.z + b.max.z) / 2}, s.get()};
@@ -279,6 +275,14 @@ bool ShapeBvh::intersect_nearest(const Ray& ray, double t_max, Intersection& hit
     }
     return false;  // look on: a nearer hit may follow
   };
+  for (const Plane* p : planes_) {
+    double t;
+    if (plane_hit(*p, ray, t) && t >= 0 && t < t_max) {
+      hit = {t, p};
+      t_max = t;
+      found = true;
+    }
+  }
   for (const Shape* s : unbounded_) try_shape(s);
   walk(ray, 0, t_max, try_shape);
   return found;
@@ -290,6 +294,13 @@ bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const
     if (blocker) *blocker = s;
     return true;
   };
+  for (const Plane* p : planes_) {
+    double t;
+    if (p->casts_shadow && plane_hit(*p, ray, t) && t >= 0 && t < t_max) {
+      if (blocker) *blocker = p;
+      return true;
+    }
+  }
   for (const Shape* s : unbounded_)
     if (blocked_by(s)) return true;
   return walk(ray, 0, t_max, blocked_by);
@@ -305,13 +316,19 @@ void ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
       if (xs[i].t >= 0 && xs[i].t < t_hit) t_hit = xs[i].t;
     return false;
   };
+  for (const Plane* p : planes_) {
+    double t;
+    if (!plane_hit(*p, ray, t)) continue;
+    xs.push_back({t, p});
+    if (t >= 0 && t < t_hit) t_hit = t;
+  }
   for (const Shape* s : unbounded_) add_shape(s);
   walk(ray, -BoundingBox::kInf, t_hit, add_shape);
   sort_intersections(xs);
 }
 
 std::size_t ShapeBvh::bytes() const {
-  return nodes_.capacity() * sizeof(Node) + (shapes_.capacity() + unbounded_.capacity()) * sizeof(const Shape*);
+  return nodes_.capacity() * sizeof(Node) + (shapes_.capacity() + planes_.capacity() + unbounded_.capacity()) * sizeof(const Shape*);
 }
 
 }  // namespace toroid

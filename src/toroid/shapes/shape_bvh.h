@@ -3,8 +3,9 @@
 // hit and "is anything in the way" (shadow rays). The book's Group::divide
 // builds its hierarchy out of groups inside the scene graph; this one sits
 // beside the scene graph, so shapes keep their parents and the world its
-// list. Shapes whose box is unbounded (planes) are kept aside and always
-// tested.
+// list. Shapes whose box is unbounded are kept aside and always tested;
+// planes among them by their height alone (one row of the inverse
+// transform, not the whole ray: every ray tests every floor and wall).
 #pragma once
 
 #include <cstddef>
@@ -19,6 +20,7 @@
 
 namespace toroid {
 
+class Plane;
 class Shape;
 
 class ShapeBvh {
@@ -40,9 +42,6 @@ class ShapeBvh {
   // the indexed shape that blocks.
   bool blocks(const Ray& ray, double t_max, const Shape** blocker = nullptr) const;
 
-  // Whether some indexed shape, or a shape below one, is transparent (has
-  // refraction): then shading needs intersect_up_to_hit.
-  bool any_transparent() const { return any_transparent_; }
   // Replaces xs with the intersections, sorted by t, of the shapes whose
   // box the ray's line meets before the nearest hit (t >= 0) is passed: at
   // least every intersection up to the hit, negative t included, which is
@@ -70,10 +69,10 @@ class ShapeBvh {
 
   std::vector<Node> nodes_;
   std::vector<const Shape*> shapes_;     // bounded shapes, in leaf order
-  std::vector<const Shape*> unbounded_;  // tested by every query
+  std::vector<const Plane*> planes_;     // unbounded planes, tested by every query
+  std::vector<const Shape*> unbounded_;  // other unbounded shapes, likewise
   std::size_t size_ = 0;
   std::uint64_t serial_ = 0;
-  bool any_transparent_ = false;
 };
 
 }  // namespace toroid
