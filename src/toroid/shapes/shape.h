@@ -78,8 +78,10 @@ class Shape {
 
   // Box in this shape's own object space.
   virtual BoundingBox bounds() const = 0;
-  // Box in the parent's space (object bounds through this shape's transform).
-  BoundingBox parent_space_bounds() const;
+  // Box in the parent's space: object bounds through this shape's transform
+  // (the corners of bounds(), transformed), or tighter where a shape knows
+  // better (a rotated torus).
+  virtual BoundingBox parent_space_bounds() const;
   // Half the thinnest finite, non-zero side of bounds() (0 when there is
   // none, as for a plane): the scale of the shape, for the surface bias.
   // Shapes that know it without building their box override it.
