@@ -4,7 +4,10 @@
 // glibc's bytes in use once load_scene has returned (the YAML document is
 // freed by then): the difference over N is the cost of one torus in the
 // scene, split into the Torus object with its allocation, the world's list
-// and the world's index. The timing is that of loading the larger scene.
+// and the world's index. The materials are written out in full on every
+// torus; with distinct_materials=0 they are equal (the loader shares one
+// block), with 1 each torus has its own colour (a block each). The timing is
+// that of loading the larger scene.
 //   build/bench/scene_memory_bench          (docs/performance.md)
 #include <benchmark/benchmark.h>
 #include <malloc.h>
@@ -18,12 +21,13 @@
 
 namespace {
 
-std::string scene_with_tori(int n) {
+std::string scene_with_tori(int n, bool distinct_materials) {
   std::ostringstream s;
   s << "- add: camera\n  width: 8\n  height: 8\n  field-of-view: 1\n  from: [0, 0, -50]\n  to: [0, 0, 0]\n"
        "  up: [0, 1, 0]\n- add: light\n  at: [0, 50, -50]\n  intensity: [1, 1, 1]\n";
   for (int i = 0; i < n; ++i)
-    s << "- add: torus\n  major: 0.4\n  minor: 0.1\n  material:\n    color: [0.8, 0.3, 0.2]\n    specular: 0.4\n"
+    s << "- add: torus\n  major: 0.4\n  minor: 0.1\n  material:\n    color: [0.8, 0.3, "
+      << (distinct_materials ? 0.2 + 1e-5 * i : 0.2) << "]\n    specular: 0.4\n"
          "  transform:\n    - [rotate-x, " << 0.01 * i << "]\n    - [translate, " << (i % 100) - 50 << ", "
       << (i / 100) % 100 - 50 << ", " << i / 10000 << "]\n";
   return s.str();
@@ -38,7 +42,8 @@ std::size_t heap_of_loaded_scene(const std::string& text, toroid::Scene* keep) {
 
 void BM_HeapPerTorus(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
-  const std::string small = scene_with_tori(1), large = scene_with_tori(1 + n);
+  const bool distinct = state.range(1) != 0;
+  const std::string small = scene_with_tori(1, distinct), large = scene_with_tori(1 + n, distinct);
   std::size_t heap_small = 0, heap_large = 0, index_bytes = 0, list_bytes = 0;
   for (auto _ : state) {
     toroid::Scene a{{}, toroid::Camera(1, 1, 1)}, b{{}, toroid::Camera(1, 1, 1)};
@@ -54,6 +59,6 @@ void BM_HeapPerTorus(benchmark::State& state) {
   state.counters["instance_B"] = per - static_cast<double>(index_bytes + list_bytes) / n;
   state.counters["sizeof_Torus_B"] = sizeof(toroid::Torus);
 }
-BENCHMARK(BM_HeapPerTorus)->Arg(10000)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_HeapPerTorus)->ArgNames({"tori", "distinct_materials"})->Args({10000, 0})->Args({10000, 1})->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

@@ -102,14 +102,14 @@ World lit_world(const Layout& l) {
   w.lights.push_back({shifted(l.light, l.offset), Color{1, 1, 1}});
   auto torus = std::make_shared<Torus>(l.R, l.r);
   torus->set_transform(translation(l.offset.x, l.offset.y, l.offset.z));
-  torus->material = matte(kTorusColor);
+  torus->set_material(matte(kTorusColor));
   auto plane = std::make_shared<Plane>();  // touches the torus from below
   plane->set_transform(translation(l.offset.x, l.offset.y, l.offset.z - l.r) * rotation_x(std::numbers::pi / 2));
-  plane->material = matte(kPlaneColor);
+  plane->set_material(matte(kPlaneColor));
   auto sphere = std::make_shared<Sphere>();
   sphere->set_transform(translation(l.offset.x + l.blocker.x, l.offset.y + l.blocker.y, l.offset.z + l.blocker.z) *
                         scaling(l.blocker_radius, l.blocker_radius, l.blocker_radius));
-  sphere->material = matte(Color{0.3, 0.6, 0.9});
+  sphere->set_material(matte(Color{0.3, 0.6, 0.9}));
   w.objects = {torus, plane, sphere};
   return w;
 }
@@ -263,30 +263,34 @@ World glass_world(const StressCase& c) {
   w.lights.push_back({shifted(point(2 * R, -3 * R, 4 * R), o), Color{1, 1, 1}});
   auto torus = std::make_shared<Torus>(R, c.minor);
   torus->set_transform(translation(o.x, o.y, o.z));
-  torus->material.color = Color{0.1, 0.1, 0.12};
-  torus->material.ambient = 0.05;
-  torus->material.diffuse = 0.1;
-  torus->material.specular = 1;
-  torus->material.shininess = 300;
-  torus->material.reflective = 0.9;
-  torus->material.transparency = 0.9;
-  torus->material.refractive_index = 1.5;
+  Material torus_material = torus->material();
+  torus_material.color = Color{0.1, 0.1, 0.12};
+  torus_material.ambient = 0.05;
+  torus_material.diffuse = 0.1;
+  torus_material.specular = 1;
+  torus_material.shininess = 300;
+  torus_material.reflective = 0.9;
+  torus_material.transparency = 0.9;
+  torus_material.refractive_index = 1.5;
+  torus->set_material(torus_material);
   auto plane = std::make_shared<Plane>();
   const double floor = -c.minor - 0.1 * c.view * R;
   plane->set_transform(translation(o.x, o.y, o.z + floor) * rotation_x(std::numbers::pi / 2));
-  plane->material = matte(Color{1, 1, 1});
+  Material plane_material = matte(Color{1, 1, 1});
   // A twelfth of the view per tile, offset by a third of a tile so that no
   // tile edge runs through the torus's centre.
   const double tile = c.view / 12 * R;
   auto checkers = std::make_shared<CheckersPattern>(Color{0.9, 0.85, 0.7}, Color{0.25, 0.3, 0.45});
   checkers->set_transform(scaling(tile, tile, tile) * translation(1.0 / 3, 1.0 / 3, 1.0 / 3));
-  plane->material.pattern = checkers;
+  plane_material.pattern = checkers;
+  plane->set_material(plane_material);
   auto sky = std::make_shared<Sphere>();
   const double sky_radius = 2 * std::max(c.distance, 25.0) * R;  // the camera is inside
   sky->set_transform(translation(o.x, o.y, o.z) * scaling(sky_radius, sky_radius, sky_radius));
-  sky->material = matte(Color{0.55, 0.7, 0.9});
-  sky->material.ambient = 1;
-  sky->material.diffuse = 0;
+  Material sky_material = matte(Color{0.55, 0.7, 0.9});
+  sky_material.ambient = 1;
+  sky_material.diffuse = 0;
+  sky->set_material(sky_material);
   sky->casts_shadow = false;
   w.objects = {torus, plane, sky};
   return w;

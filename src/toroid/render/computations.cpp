@@ -21,14 +21,14 @@ void refractive_indices(const Intersection& hit, std::span<const Intersection> x
   containers.clear();
   for (const Intersection& x : xs) {
     const bool is_hit = same(x, hit);
-    if (is_hit) comps.n1 = containers.empty() ? 1.0 : containers.back()->material.refractive_index;
+    if (is_hit) comps.n1 = containers.empty() ? 1.0 : containers.back()->material().refractive_index;
     const auto found = std::find(containers.begin(), containers.end(), x.object);
     if (found != containers.end())
       containers.erase(found);
     else
       containers.push_back(x.object);
     if (is_hit) {
-      comps.n2 = containers.empty() ? 1.0 : containers.back()->material.refractive_index;
+      comps.n2 = containers.empty() ? 1.0 : containers.back()->material().refractive_index;
       return;
     }
   }

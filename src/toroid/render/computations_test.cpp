@@ -82,13 +82,19 @@ TEST(Intersections, TheUnderPointIsOffsetBelowTheSurface) {
 TEST(Intersections, FindingN1AndN2AtVariousIntersections) {
   const auto a = glass_sphere();
   a->set_transform(scaling(2, 2, 2));
-  a->material.refractive_index = 1.5;
+  Material a_material = a->material();
+  a_material.refractive_index = 1.5;
+  a->set_material(a_material);
   const auto b = glass_sphere();
   b->set_transform(translation(0, 0, -0.25));
-  b->material.refractive_index = 2.0;
+  Material b_material = b->material();
+  b_material.refractive_index = 2.0;
+  b->set_material(b_material);
   const auto c = glass_sphere();
   c->set_transform(translation(0, 0, 0.25));
-  c->material.refractive_index = 2.5;
+  Material c_material = c->material();
+  c_material.refractive_index = 2.5;
+  c->set_material(c_material);
   const Ray r{point(0, 0, -4), vector(0, 0, 1)};
   const Intersections xs{{2, a.get()},    {2.75, b.get()}, {3.25, c.get()},
                          {4.75, b.get()}, {5.25, c.get()}, {6, a.get()}};

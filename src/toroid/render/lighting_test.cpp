@@ -93,14 +93,23 @@ TEST(Materials, LightingWithAPatternApplied) {
 
 // The soft-shadows bonus chapter's materials scenarios (from the book's
 // bonus chapter; not in the community transcription).
+
+// Both scenarios' "shape.material.ambient ← 0.1, .diffuse ← 0.9,
+// .specular ← 0, .color ← color(1, 1, 1)".
+Material without_specular() {
+  Material m;
+  m.ambient = 0.1;
+  m.diffuse = 0.9;
+  m.specular = 0;
+  m.color = Color{1, 1, 1};
+  return m;
+}
+
 TEST(Materials, LightingUsesLightIntensityToAttenuateColor) {
   World w = default_world();
   w.lights[0] = PointLight{point(0, 0, -10), Color{1, 1, 1}};
   Shape& shape = *w.objects[0];
-  shape.material.ambient = 0.1;
-  shape.material.diffuse = 0.9;
-  shape.material.specular = 0;
-  shape.material.color = Color{1, 1, 1};
+  shape.set_material(without_specular());
   const Tuple pt = point(0, 0, -1);
   const Tuple eyev = vector(0, 0, -1);
   const Tuple normalv = vector(0, 0, -1);
@@ -110,17 +119,14 @@ TEST(Materials, LightingUsesLightIntensityToAttenuateColor) {
   } examples[] = {{1.0, Color(1, 1, 1)}, {0.5, Color(0.55, 0.55, 0.55)}, {0.0, Color(0.1, 0.1, 0.1)}};
   for (const auto& e : examples) {
     SCOPED_TRACE(e.intensity);
-    EXPECT_APPROX(lighting(shape.material, shape, w.lights[0], pt, eyev, normalv, e.intensity), e.result);
+    EXPECT_APPROX(lighting(shape.material(), shape, w.lights[0], pt, eyev, normalv, e.intensity), e.result);
   }
 }
 
 TEST(Materials, LightingSamplesTheAreaLight) {
   const AreaLight light(point(-0.5, -0.5, -5), vector(1, 0, 0), 2, vector(0, 1, 0), 2, Color{1, 1, 1});
   Sphere shape;
-  shape.material.ambient = 0.1;
-  shape.material.diffuse = 0.9;
-  shape.material.specular = 0;
-  shape.material.color = Color{1, 1, 1};
+  shape.set_material(without_specular());
   const Tuple eye = point(0, 0, -5);
   const struct {
     Tuple pt;
@@ -134,7 +140,7 @@ TEST(Materials, LightingSamplesTheAreaLight) {
     SCOPED_TRACE(::testing::PrintToString(e.pt));
     const Tuple eyev = normalize(eye - e.pt);
     const Tuple normalv = vector(e.pt.x, e.pt.y, e.pt.z);
-    EXPECT_TRUE(approx_equal(lighting(shape.material, shape, light, e.pt, eyev, normalv, 1.0), e.result, 1e-4));
+    EXPECT_TRUE(approx_equal(lighting(shape.material(), shape, light, e.pt, eyev, normalv, 1.0), e.result, 1e-4));
   }
 }
 

@@ -15,7 +15,9 @@ World torus_world() {
   World w = default_world();
   auto t = std::make_shared<Torus>(1.0, 0.3);
   t->set_transform(translation(0, 0, -1.5) * rotation_x(1.0));
-  t->material.reflective = 0.3;
+  Material t_material = t->material();
+  t_material.reflective = 0.3;
+  t->set_material(t_material);
   w.objects.push_back(t);
   auto p = std::make_shared<Plane>();
   p->set_transform(translation(0, -1, 0));

@@ -14,9 +14,11 @@ World default_world() {
   World w;
   w.lights.push_back(PointLight{point(-10, 10, -10), Color{1, 1, 1}});
   auto s1 = std::make_shared<Sphere>();
-  s1->material.color = Color{0.8, 1.0, 0.6};
-  s1->material.diffuse = 0.7;
-  s1->material.specular = 0.2;
+  Material m1;
+  m1.color = Color{0.8, 1.0, 0.6};
+  m1.diffuse = 0.7;
+  m1.specular = 0.2;
+  s1->set_material(m1);
   auto s2 = std::make_shared<Sphere>();
   s2->set_transform(scaling(0.5, 0.5, 0.5));
   w.objects.push_back(std::move(s1));
@@ -92,7 +94,7 @@ double intensity_at(const AreaLight& light, const Tuple& point, const World& wor
 }
 
 Color shade_hit(const World& world, const Computations& comps, int remaining) {
-  const Material& m = comps.object->material;
+  const Material& m = comps.object->material();
   Color surface = kBlack;
   for (const PointLight& light : world.lights) {
     // A light behind the surface lights nothing, shadowed or not (lighting's
@@ -123,7 +125,7 @@ Color color_at(const World& world, const Ray& ray, int remaining) {
     // and schlick): for any other hit, the nearest one is all it takes.
     Intersection nearest;
     if (!intersect_nearest(world, ray, nearest)) return kBlack;
-    if (nearest.object->material.transparency == 0)
+    if (nearest.object->material().transparency == 0)
       return shade_hit(world, prepare_computations(nearest, ray), remaining);
   }
   // Refraction needs n1 and n2, from every intersection along the ray up
@@ -143,14 +145,14 @@ Color color_at(const World& world, const Ray& ray, int remaining) {
 }
 
 Color reflected_color(const World& world, const Computations& comps, int remaining) {
-  const double reflective = comps.object->material.reflective;
+  const double reflective = comps.object->material().reflective;
   if (remaining <= 0 || reflective == 0) return kBlack;
   const Ray reflect_ray{comps.over_point, comps.reflectv};
   return color_at(world, reflect_ray, remaining - 1) * reflective;
 }
 
 Color refracted_color(const World& world, const Computations& comps, int remaining) {
-  const double transparency = comps.object->material.transparency;
+  const double transparency = comps.object->material().transparency;
   if (remaining <= 0 || transparency == 0) return kBlack;
   // Snell's law: n1 sin(i) = n2 sin(t).
   const double n_ratio = comps.n1 / comps.n2;

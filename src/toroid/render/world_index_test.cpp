@@ -18,15 +18,19 @@ World torus_world(bool glass) {
   World w = default_world();
   auto floor = std::make_shared<Plane>();
   floor->set_transform(translation(0, -1, 0));
-  floor->material.reflective = 0.3;
+  Material floor_material = floor->material();
+  floor_material.reflective = 0.3;
+  floor->set_material(floor_material);
   w.objects.push_back(floor);
   for (int i = 0; i < 6; ++i) {
     auto t = std::make_shared<Torus>(0.8, 0.2);
     t->set_transform(translation(-2.5 + i, 0, 1.5) * rotation_x(0.4 * i));
     if (glass && i % 2 == 0) {
-      t->material.transparency = 0.9;
-      t->material.reflective = 0.9;
-      t->material.refractive_index = 1.5;
+      Material t_material = t->material();
+      t_material.transparency = 0.9;
+      t_material.reflective = 0.9;
+      t_material.refractive_index = 1.5;
+      t->set_material(t_material);
     }
     w.objects.push_back(t);
   }

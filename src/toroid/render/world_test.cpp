@@ -28,7 +28,7 @@ class TestPattern : public Pattern {
 bool contains_sphere(const World& w, const Matrix4& transform, const Material& m) {
   for (const auto& object : w.objects) {
     if (dynamic_cast<const Sphere*>(object.get()) == nullptr) continue;
-    const Material& om = object->material;
+    const Material& om = object->material();
     if (approx_equal(object->transform(), transform) && approx_equal(om.color, m.color) &&
         om.ambient == m.ambient && om.diffuse == m.diffuse && om.specular == m.specular &&
         om.shininess == m.shininess && om.reflective == m.reflective && om.transparency == m.transparency &&
@@ -129,11 +129,15 @@ TEST(World, TheColorWhenARayHits) {
 TEST(World, TheColorWithAnIntersectionBehindTheRay) {
   World w = default_world();
   Shape& outer = *w.objects[0];
-  outer.material.ambient = 1;
+  Material outer_material = outer.material();
+  outer_material.ambient = 1;
+  outer.set_material(outer_material);
   Shape& inner = *w.objects[1];
-  inner.material.ambient = 1;
+  Material inner_material = inner.material();
+  inner_material.ambient = 1;
+  inner.set_material(inner_material);
   const Ray r{point(0, 0, 0.75), vector(0, 0, -1)};
-  EXPECT_APPROX(color_at(w, r), inner.material.color);
+  EXPECT_APPROX(color_at(w, r), inner.material().color);
 }
 
 TEST(World, ThereIsNoShadowWhenNothingIsCollinearWithPointAndLight) {
@@ -178,7 +182,9 @@ TEST(World, TheReflectedColorForANonreflectiveMaterial) {
   World w = default_world();
   const Ray r{point(0, 0, 0), vector(0, 0, 1)};
   Shape& shape = *w.objects[1];
-  shape.material.ambient = 1;
+  Material shape_material = shape.material();
+  shape_material.ambient = 1;
+  shape.set_material(shape_material);
   const Intersection i{1, &shape};
   const Computations comps = prepare_computations(i, r);
   EXPECT_APPROX(reflected_color(w, comps), Color(0, 0, 0));
@@ -187,7 +193,9 @@ TEST(World, TheReflectedColorForANonreflectiveMaterial) {
 TEST(World, TheReflectedColorForAReflectiveMaterial) {
   World w = default_world();
   const auto shape = add_floor(w);
-  shape->material.reflective = 0.5;
+  Material shape_material = shape->material();
+  shape_material.reflective = 0.5;
+  shape->set_material(shape_material);
   const Ray r{point(0, 0, -3), vector(0, -kHalfSqrt2, kHalfSqrt2)};
   const Intersection i{std::sqrt(2.0), shape.get()};
   const Computations comps = prepare_computations(i, r);
@@ -197,7 +205,9 @@ TEST(World, TheReflectedColorForAReflectiveMaterial) {
 TEST(World, ShadeHitWithAReflectiveMaterial) {
   World w = default_world();
   const auto shape = add_floor(w);
-  shape->material.reflective = 0.5;
+  Material shape_material = shape->material();
+  shape_material.reflective = 0.5;
+  shape->set_material(shape_material);
   const Ray r{point(0, 0, -3), vector(0, -kHalfSqrt2, kHalfSqrt2)};
   const Intersection i{std::sqrt(2.0), shape.get()};
   const Computations comps = prepare_computations(i, r);
@@ -208,11 +218,15 @@ TEST(World, ColorAtWithMutuallyReflectiveSurfaces) {
   World w;
   w.lights = {PointLight{point(0, 0, 0), Color{1, 1, 1}}};
   auto lower = std::make_shared<Plane>();
-  lower->material.reflective = 1;
+  Material lower_material = lower->material();
+  lower_material.reflective = 1;
+  lower->set_material(lower_material);
   lower->set_transform(translation(0, -1, 0));
   w.objects.push_back(lower);
   auto upper = std::make_shared<Plane>();
-  upper->material.reflective = 1;
+  Material upper_material = upper->material();
+  upper_material.reflective = 1;
+  upper->set_material(upper_material);
   upper->set_transform(translation(0, 1, 0));
   w.objects.push_back(upper);
   const Ray r{point(0, 0, 0), vector(0, 1, 0)};
@@ -226,7 +240,9 @@ TEST(World, ColorAtWithMutuallyReflectiveSurfaces) {
 TEST(World, TheReflectedColorAtTheMaximumRecursiveDepth) {
   World w = default_world();
   const auto shape = add_floor(w);
-  shape->material.reflective = 0.5;
+  Material shape_material = shape->material();
+  shape_material.reflective = 0.5;
+  shape->set_material(shape_material);
   const Ray r{point(0, 0, -3), vector(0, -kHalfSqrt2, kHalfSqrt2)};
   const Intersection i{std::sqrt(2.0), shape.get()};
   const Computations comps = prepare_computations(i, r);
@@ -245,8 +261,10 @@ TEST(World, TheRefractedColorWithAnOpaqueSurface) {
 TEST(World, TheRefractedColorAtTheMaximumRecursiveDepth) {
   World w = default_world();
   Shape& shape = *w.objects[0];
-  shape.material.transparency = 1.0;
-  shape.material.refractive_index = 1.5;
+  Material shape_material = shape.material();
+  shape_material.transparency = 1.0;
+  shape_material.refractive_index = 1.5;
+  shape.set_material(shape_material);
   const Ray r{point(0, 0, -5), vector(0, 0, 1)};
   const Intersections xs{{4, &shape}, {6, &shape}};
   const Computations comps = prepare_computations(xs[0], r, xs);
@@ -256,8 +274,10 @@ TEST(World, TheRefractedColorAtTheMaximumRecursiveDepth) {
 TEST(World, TheRefractedColorUnderTotalInternalReflection) {
   World w = default_world();
   Shape& shape = *w.objects[0];
-  shape.material.transparency = 1.0;
-  shape.material.refractive_index = 1.5;
+  Material shape_material = shape.material();
+  shape_material.transparency = 1.0;
+  shape_material.refractive_index = 1.5;
+  shape.set_material(shape_material);
   const Ray r{point(0, 0, kHalfSqrt2), vector(0, 1, 0)};
   const Intersections xs{{-kHalfSqrt2, &shape}, {kHalfSqrt2, &shape}};
   // Inside the sphere: the hit is xs[1], not xs[0].
@@ -268,11 +288,15 @@ TEST(World, TheRefractedColorUnderTotalInternalReflection) {
 TEST(World, TheRefractedColorWithARefractedRay) {
   World w = default_world();
   Shape& a = *w.objects[0];
-  a.material.ambient = 1.0;
-  a.material.pattern = std::make_shared<TestPattern>();
+  Material a_material = a.material();
+  a_material.ambient = 1.0;
+  a_material.pattern = std::make_shared<TestPattern>();
+  a.set_material(a_material);
   Shape& b = *w.objects[1];
-  b.material.transparency = 1.0;
-  b.material.refractive_index = 1.5;
+  Material b_material = b.material();
+  b_material.transparency = 1.0;
+  b_material.refractive_index = 1.5;
+  b.set_material(b_material);
   const Ray r{point(0, 0, 0.1), vector(0, 1, 0)};
   const Intersections xs{{-0.9899, &a}, {-0.4899, &b}, {0.4899, &b}, {0.9899, &a}};
   const Computations comps = prepare_computations(xs[2], r, xs);
@@ -282,11 +306,15 @@ TEST(World, TheRefractedColorWithARefractedRay) {
 TEST(World, ShadeHitWithATransparentMaterial) {
   World w = default_world();
   const auto floor = add_floor(w);
-  floor->material.transparency = 0.5;
-  floor->material.refractive_index = 1.5;
+  Material floor_material = floor->material();
+  floor_material.transparency = 0.5;
+  floor_material.refractive_index = 1.5;
+  floor->set_material(floor_material);
   auto ball = std::make_shared<Sphere>();
-  ball->material.color = Color{1, 0, 0};
-  ball->material.ambient = 0.5;
+  Material ball_material = ball->material();
+  ball_material.color = Color{1, 0, 0};
+  ball_material.ambient = 0.5;
+  ball->set_material(ball_material);
   ball->set_transform(translation(0, -3.5, -0.5));
   w.objects.push_back(ball);
   const Ray r{point(0, 0, -3), vector(0, -kHalfSqrt2, kHalfSqrt2)};
@@ -299,12 +327,16 @@ TEST(World, ShadeHitWithAReflectiveTransparentMaterial) {
   World w = default_world();
   const Ray r{point(0, 0, -3), vector(0, -kHalfSqrt2, kHalfSqrt2)};
   const auto floor = add_floor(w);
-  floor->material.reflective = 0.5;
-  floor->material.transparency = 0.5;
-  floor->material.refractive_index = 1.5;
+  Material floor_material = floor->material();
+  floor_material.reflective = 0.5;
+  floor_material.transparency = 0.5;
+  floor_material.refractive_index = 1.5;
+  floor->set_material(floor_material);
   auto ball = std::make_shared<Sphere>();
-  ball->material.color = Color{1, 0, 0};
-  ball->material.ambient = 0.5;
+  Material ball_material = ball->material();
+  ball_material.color = Color{1, 0, 0};
+  ball_material.ambient = 0.5;
+  ball->set_material(ball_material);
   ball->set_transform(translation(0, -3.5, -0.5));
   w.objects.push_back(ball);
   const Intersections xs{{std::sqrt(2.0), floor.get()}};

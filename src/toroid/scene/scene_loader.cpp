@@ -15,6 +15,7 @@
 #include <memory>
 #include <set>
 #include <sstream>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -73,6 +74,19 @@ std::string suggestion(const std::string& word, const std::vector<std::string>& 
   if (best.empty() || best_d > limit) return {};
   return " (did you mean '" + best + "'?)";
 }
+
+// Orders materials by value, every field and the pattern's address, for the
+// loader's table of shared materials; finds a block by a Material.
+struct MaterialOrder {
+  using is_transparent = void;
+  static auto key(const Material& m) {
+    return std::tie(m.color.r, m.color.g, m.color.b, m.ambient, m.diffuse, m.specular, m.shininess, m.reflective,
+                    m.transparency, m.refractive_index, m.pattern);
+  }
+  static const Material& value(const Material& m) { return m; }
+  static const Material& value(const std::shared_ptr<const Material>& m) { return *m; }
+  bool operator()(const auto& a, const auto& b) const { return key(value(a)) < key(value(b)); }
+};
 
 // The key/value pairs of a YAML map, in order, keeping nodes for positions.
 struct Entry {
@@ -760,20 +774,29 @@ class Loader {
         fail(f.value, "cannot load OBJ file '" + file + "': " + e.what());
       }
     }
-    s->material = material;
+    const std::shared_ptr<const Material> shared = shared_material(material);
+    s->set_material(shared);
     if (const Entry* t = find(es, "transform")) s->set_transform(transform_of(t->value));
     // Groups and CSG pass their material to the primitives below them that
     // name none; their `shadow` applies to the whole subtree.
-    if (kind == "obj" && has_material) apply_material_recursive(*s, material);
+    if (kind == "obj" && has_material) apply_material_recursive(*s, shared);
     if (has_shadow) set_shadow_recursive(*s, casts_shadow);
     visiting = outer_defines;
     return s;
   }
 
-  static void apply_material_recursive(Shape& s, const Material& m) {
-    s.material = m;
+  static void apply_material_recursive(Shape& s, const std::shared_ptr<const Material>& m) {
+    s.set_material(m);
     if (auto* g = dynamic_cast<Group*>(&s))
       for (const auto& c : g->children()) apply_material_recursive(*c, m);
+  }
+
+  // Equal materials share one block: a scene may give thousands of shapes
+  // the same material (a define), and a shape holds only a pointer to it.
+  std::shared_ptr<const Material> shared_material(const Material& m) const {
+    auto it = materials_.find(m);
+    if (it == materials_.end()) it = materials_.insert(std::make_shared<const Material>(m)).first;
+    return *it;
   }
 
   std::string source_;
@@ -788,6 +811,7 @@ class Loader {
   mutable std::map<std::string, Matrix4> transform_defines_;
   mutable std::optional<TorusRadii> material_torus_;                      // see MaterialTorus
   mutable std::map<std::string, std::shared_ptr<const Canvas>> images_;  // by canonical path
+  mutable std::set<std::shared_ptr<const Material>, MaterialOrder> materials_;
 };
 
 Scene Loader::load(const YAML::Node& root) {
@@ -904,6 +928,8 @@ Scene Loader::build(const std::function<std::optional<YAML::Node>()>& next_item,
   if (!cam) fail(list, "the scene has no camera (add one with '- add: camera')");
   Camera camera(cam->width, cam->height, cam->fov);
   camera.set_transform(view_transform(cam->from, cam->to, cam->up));
+  // The list grew by doubling; it holds 16 bytes per shape from here on.
+  world.objects.shrink_to_fit();
   index_objects(world);
   return Scene{std::move(world), camera};
 }

@@ -102,7 +102,7 @@ TEST(SceneLoaderItems, AFlowListLoads) {
       " {add: sphere, material: {color: [0.5, 0.25, 1]}}]\n",
       "s.yml", ".");
   ASSERT_EQ(s.world.objects.size(), 1u);
-  EXPECT_TRUE(approx_equal(s.world.objects[0]->material.color, Color{0.5, 0.25, 1}));
+  EXPECT_TRUE(approx_equal(s.world.objects[0]->material().color, Color{0.5, 0.25, 1}));
   EXPECT_EQ(error_of("[{add: light, at: [0, 0, 0], intensity: [1, 1, 1]},\n {add: cub}]\n", false),
             "s.yml:2:8: unknown shape 'cub' (did you mean 'cube'?)");
 }
@@ -116,8 +116,8 @@ TEST(SceneLoaderItems, AnAliasToAnAnchorInAnotherItemLoads) {
                                              "  material: *red\n",
                                          "s.yml", ".");
   ASSERT_EQ(s.world.objects.size(), 2u);
-  EXPECT_TRUE(approx_equal(s.world.objects[0]->material.color, Color{1, 0, 0}));
-  EXPECT_TRUE(approx_equal(s.world.objects[1]->material.color, Color{1, 0, 0}));
+  EXPECT_TRUE(approx_equal(s.world.objects[0]->material().color, Color{1, 0, 0}));
+  EXPECT_TRUE(approx_equal(s.world.objects[1]->material().color, Color{1, 0, 0}));
 }
 
 TEST(SceneLoaderItems, ASyntaxErrorAfterABadItemIsReportedFirstAsBefore) {

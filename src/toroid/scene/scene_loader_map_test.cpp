@@ -38,7 +38,7 @@ class MapPatterns : public ::testing::Test {
   Scene load(const std::string& items) const { return load_scene(write("scene.yml", kCamera + items)); }
   // The colour of object `i`'s pattern at an object-space point.
   static Color colour(const Scene& s, std::size_t i, const Tuple& p) {
-    return s.world.objects.at(i)->material.pattern->pattern_at_object(p);
+    return s.world.objects.at(i)->material().pattern->pattern_at_object(p);
   }
   void expect_error(const std::string& items, const std::string& message) const {
     const std::string path = write("scene.yml", kCamera + items);
@@ -126,7 +126,7 @@ TEST_F(MapPatterns, AnImageNamedTwiceIsReadOnce) {
   const Scene s = load(sphere + sphere + "- add: sphere\n  material:\n    pattern: {type: map, mapping: spherical, "
                                          "uv_pattern: {type: image, file: ./shared.ppm}}\n");
   auto canvas_of = [&](std::size_t i) {
-    const auto& map = dynamic_cast<const TextureMapPattern&>(*s.world.objects.at(i)->material.pattern);
+    const auto& map = dynamic_cast<const TextureMapPattern&>(*s.world.objects.at(i)->material().pattern);
     return &dynamic_cast<const UvImage&>(map.uv_pattern()).canvas();
   };
   EXPECT_EQ(canvas_of(0), canvas_of(1));

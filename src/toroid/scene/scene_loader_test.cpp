@@ -164,9 +164,9 @@ TEST_F(SceneFiles, LoadsATorusWithDefinesAndCsg) {
   EXPECT_DOUBLE_EQ(t->major(), 2);
   EXPECT_DOUBLE_EQ(t->minor(), 0.5);
   EXPECT_EQ(t->solver(), QuarticSolver::Tianheng);
-  EXPECT_TRUE(approx_equal(t->material.color, Color{1, 0.5, 0.6}));
-  EXPECT_DOUBLE_EQ(t->material.specular, 0.5);
-  EXPECT_DOUBLE_EQ(t->material.ambient, 0.3);
+  EXPECT_TRUE(approx_equal(t->material().color, Color{1, 0.5, 0.6}));
+  EXPECT_DOUBLE_EQ(t->material().specular, 0.5);
+  EXPECT_DOUBLE_EQ(t->material().ambient, 0.3);
   // rotate-x first, then the translation.
   EXPECT_TRUE(approx_equal(t->transform() * point(0, 0, 1), point(0, 0, 0)));
   auto* d = dynamic_cast<Torus*>(s.world.objects[1].get());
@@ -233,6 +233,68 @@ TEST_F(SceneFiles, LoadsAnAreaLight) {
   EXPECT_EQ(l.samples, 8);
   EXPECT_TRUE(l.jitter);
   EXPECT_TRUE(approx_equal(l.intensity, Color{1.5, 1.5, 1.5}));
+}
+
+// Memory: shapes of equal material share one block (a shape holds a
+// pointer to it).
+TEST_F(SceneFiles, ShapesOfEqualMaterialShareIt) {
+  const Scene s = load_scene(write("m.yml", kCamera +
+                                                "- define: white-material\n"
+                                                "  value:\n"
+                                                "    color: [1, 1, 1]\n"
+                                                "    specular: 0.2\n"
+                                                "- add: torus\n"
+                                                "  material: white-material\n"
+                                                "- add: sphere\n"
+                                                "  material: white-material\n"
+                                                "- add: cube\n"
+                                                "  material: {color: [1, 1, 1], specular: 0.2}\n"
+                                                "- add: plane\n"
+                                                "  material: {color: [1, 1, 1], specular: 0.3}\n"
+                                                "- add: group\n"
+                                                "  material: white-material\n"
+                                                "  children: [{add: cone}]\n"));
+  ASSERT_EQ(s.world.objects.size(), 5u);
+  Shape& torus = *s.world.objects[0];
+  const Shape& sphere = *s.world.objects[1];
+  const Shape& cube = *s.world.objects[2];
+  const Shape& plane = *s.world.objects[3];
+  const auto& group = dynamic_cast<const Group&>(*s.world.objects[4]);
+  ASSERT_EQ(group.children().size(), 1u);
+  EXPECT_EQ(&torus.material(), &sphere.material());  // the same define
+  EXPECT_EQ(&torus.material(), &cube.material());    // the same values written out
+  EXPECT_EQ(&torus.material(), &group.material());
+  EXPECT_EQ(&torus.material(), &group.children()[0]->material());  // inherited
+  EXPECT_NE(&torus.material(), &plane.material());
+  EXPECT_DOUBLE_EQ(plane.material().specular, 0.3);
+
+  // Changing one shape's material leaves the others' alone.
+  Material red = torus.material();
+  red.color = Color{1, 0, 0};
+  torus.set_material(red);
+  EXPECT_TRUE(approx_equal(torus.material().color, Color{1, 0, 0}));
+  EXPECT_TRUE(approx_equal(sphere.material().color, Color{1, 1, 1}));
+  EXPECT_TRUE(approx_equal(cube.material().color, Color{1, 1, 1}));
+  EXPECT_DOUBLE_EQ(sphere.material().specular, 0.2);
+}
+
+TEST_F(SceneFiles, MaterialsWithTheirOwnPatternsAreNotShared) {
+  // Each use of a pattern makes its own; a torus mapping takes its torus's radii.
+  const Scene s = load_scene(write("p.yml", kCamera +
+                                                "- define: stripy\n"
+                                                "  value:\n"
+                                                "    pattern: {type: stripes, colors: [[1, 1, 1], [0, 0, 0]]}\n"
+                                                "- add: sphere\n"
+                                                "  material: stripy\n"
+                                                "- add: sphere\n"
+                                                "  material: stripy\n"));
+  ASSERT_EQ(s.world.objects.size(), 2u);
+  const Material& a = s.world.objects[0]->material();
+  const Material& b = s.world.objects[1]->material();
+  ASSERT_NE(a.pattern, nullptr);
+  ASSERT_NE(b.pattern, nullptr);
+  EXPECT_NE(a.pattern, b.pattern);
+  EXPECT_NE(&a, &b);
 }
 
 TEST(SceneLoader, TheGlamourShotHasAJitteredAreaLight) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 
 #include "toroid/math/affine.h"
 #include "toroid/math/matrix.h"
@@ -21,6 +22,9 @@ class Shape {
   // field fits in the tail padding (a scene may hold many thousands of
   // shapes; see docs/performance.md).
   Affine inverse_;
+  std::shared_ptr<const Material> material_ = default_material();
+
+  static std::shared_ptr<const Material> default_material();
 
  public:
   Shape() = default;
@@ -37,7 +41,15 @@ class Shape {
   // Precondition: is_invertible(m) and m is affine (bottom row 0 0 0 1).
   void set_transform(const Matrix4& m);
 
-  Material material;
+  // The material is held by pointer (16 bytes instead of its 96): shapes
+  // made without one share one process-wide default, and the scene loader
+  // gives shapes with equal materials one block (docs/performance.md).
+  const Material& material() const { return *material_; }
+  // A new block holding a copy of m, this shape's alone.
+  void set_material(const Material& m);
+  // Shares m's block with its other holders. Precondition: m != nullptr.
+  void set_material(std::shared_ptr<const Material> m) { material_ = std::move(m); }
+
   const Shape* parent = nullptr;
   // Shapes with casts_shadow == false are skipped by shadow rays (YAML `shadow: false`).
   bool casts_shadow = true;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 #include "support/approx.h"
@@ -37,7 +38,7 @@ TEST(Shapes, AssigningATransformation) {
 
 TEST(Shapes, TheDefaultMaterial) {
   const TestShape s;
-  const Material m = s.material;
+  const Material m = s.material();
   EXPECT_MATERIAL_EQ(m, Material{});
 }
 
@@ -45,9 +46,47 @@ TEST(Shapes, AssigningAMaterial) {
   TestShape s;
   Material m;
   m.ambient = 1;
-  s.material = m;
-  EXPECT_MATERIAL_EQ(s.material, m);
-  EXPECT_EQ(s.material.ambient, 1.0);
+  s.set_material(m);
+  EXPECT_MATERIAL_EQ(s.material(), m);
+  EXPECT_EQ(s.material().ambient, 1.0);
+}
+
+// Memory: the material is a pointer to a block, shared where it can be.
+TEST(Shapes, ShapesWithoutAMaterialShareTheDefault) {
+  const TestShape a, b;
+  EXPECT_EQ(&a.material(), &b.material());
+  EXPECT_MATERIAL_EQ(a.material(), Material{});
+}
+
+TEST(Shapes, AssigningAMaterialGivesTheShapeItsOwnCopy) {
+  TestShape a, b;
+  Material m;
+  m.ambient = 1;
+  a.set_material(m);
+  b.set_material(m);
+  EXPECT_NE(&a.material(), &b.material());
+  EXPECT_NE(&a.material(), &m);
+  m.ambient = 0.5;  // the copy keeps the value it was given
+  EXPECT_EQ(a.material().ambient, 1.0);
+  TestShape fresh;
+  EXPECT_MATERIAL_EQ(fresh.material(), Material{});  // the default is untouched
+}
+
+TEST(Shapes, SharingAMaterial) {
+  Material m;
+  m.diffuse = 0.3;
+  const auto shared = std::make_shared<const Material>(m);
+  TestShape a, b;
+  a.set_material(shared);
+  b.set_material(shared);
+  EXPECT_EQ(&a.material(), shared.get());
+  EXPECT_EQ(&b.material(), shared.get());
+  Material other;
+  other.diffuse = 0.6;
+  a.set_material(other);  // b keeps the shared block
+  EXPECT_EQ(a.material().diffuse, 0.6);
+  EXPECT_EQ(b.material().diffuse, 0.3);
+  EXPECT_EQ(&b.material(), shared.get());
 }
 
 TEST(Shapes, IntersectingAScaledShapeWithARay) {

@@ -26,8 +26,10 @@ Tuple Sphere::local_normal_at(const Tuple& p, const Intersection&) const { retur
 
 std::shared_ptr<Sphere> glass_sphere() {
   auto s = std::make_shared<Sphere>();
-  s->material.transparency = 1.0;
-  s->material.refractive_index = 1.5;
+  Material glass;
+  glass.transparency = 1.0;
+  glass.refractive_index = 1.5;
+  s->set_material(glass);
   return s;
 }
 

@@ -143,7 +143,7 @@ TEST(Spheres, ComputingTheNormalOnATransformedSphere) {
 
 TEST(Spheres, ASphereHasADefaultMaterial) {
   const Sphere s;
-  const Material m = s.material;
+  const Material m = s.material();
   EXPECT_MATERIAL_EQ(m, Material{});
 }
 
@@ -151,16 +151,16 @@ TEST(Spheres, ASphereMayBeAssignedAMaterial) {
   Sphere s;
   Material m;
   m.ambient = 1;
-  s.material = m;
-  EXPECT_MATERIAL_EQ(s.material, m);
-  EXPECT_EQ(s.material.ambient, 1.0);
+  s.set_material(m);
+  EXPECT_MATERIAL_EQ(s.material(), m);
+  EXPECT_EQ(s.material().ambient, 1.0);
 }
 
 TEST(Spheres, AHelperForProducingASphereWithAGlassyMaterial) {
   const auto s = glass_sphere();
   EXPECT_APPROX(s->transform(), Matrix4::identity());
-  EXPECT_EQ(s->material.transparency, 1.0);
-  EXPECT_EQ(s->material.refractive_index, 1.5);
+  EXPECT_EQ(s->material().transparency, 1.0);
+  EXPECT_EQ(s->material().refractive_index, 1.5);
 }
 
 }  // namespace

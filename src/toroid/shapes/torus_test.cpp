@@ -208,8 +208,10 @@ TEST(Torus, RefractionThroughAGlassTorusCrossesTheHole) {
   // containers algorithm must give n1/n2 = 1.5/1.0 on leaving, 1.0/1.5 on
   // re-entering.
   auto t = std::make_shared<Torus>(1, 0.25);
-  t->material.transparency = 1.0;
-  t->material.refractive_index = 1.5;
+  Material t_material = t->material();
+  t_material.transparency = 1.0;
+  t_material.refractive_index = 1.5;
+  t->set_material(t_material);
   const Ray r{point(-5, 0, 0), vector(1, 0, 0)};
   const Intersections xs = intersect_sorted(*t, r);
   ASSERT_EQ(xs.size(), 4u);
@@ -227,9 +229,11 @@ TEST(Torus, AGlassTorusShadesWithoutBlackPixels) {
   World w;
   w.lights.push_back({point(-10, 10, -10), Color{1, 1, 1}});
   auto t = std::make_shared<Torus>(1, 0.25);
-  t->material.transparency = 0.9;
-  t->material.refractive_index = 1.5;
-  t->material.reflective = 0.1;
+  Material t_material = t->material();
+  t_material.transparency = 0.9;
+  t_material.refractive_index = 1.5;
+  t_material.reflective = 0.1;
+  t->set_material(t_material);
   t->set_transform(rotation_x(M_PI / 2));  // ring faces the camera (axis along z -> y... axis now -y)
   w.objects.push_back(t);
   auto s = std::make_shared<Sphere>();
@@ -310,7 +314,7 @@ TEST(Torus, TheInsideSeenThroughTheOpenEdgeIsLitLikeTheOutside) {
   const Color out = color_at(outside_lit, onto_wall);
   const Color dark = color_at(inside_dark, into_edge);
   EXPECT_APPROX(in, out);
-  const Color ambient = t->material.color * t->material.ambient;
+  const Color ambient = t->material().color * t->material().ambient;
   EXPECT_GT(in.r, ambient.r + 0.5);
   EXPECT_APPROX(dark, ambient);
 }
