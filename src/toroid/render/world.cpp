@@ -120,13 +120,14 @@ Color shade_hit(const World& world, const Computations& comps, int remaining) {
 
 Color color_at(const World& world, const Ray& ray, int remaining) {
   ++rays_traced_on_this_thread();
-  if (indexed(world)) {
-    // n1 and n2 are read only when the hit surface refracts (refracted_color
-    // and schlick): for any other hit, the nearest one is all it takes.
+  if (indexed(world) && !world.index.any_transparent()) {
+    // Nothing refracts, so n1 and n2 go unread: the nearest hit is enough.
+    // (Asking for the nearest hit first and for the list only when it
+    // refracts costs more than it saves: 17% more instructions on glass3,
+    // 5% fewer on reflect-refract.)
     Intersection nearest;
     if (!intersect_nearest(world, ray, nearest)) return kBlack;
-    if (nearest.object->material().transparency == 0)
-      return shade_hit(world, prepare_computations(nearest, ray), remaining);
+    return shade_hit(world, prepare_computations(nearest, ray), remaining);
   }
   // Refraction needs n1 and n2, from every intersection along the ray up
   // to the hit (the containers algorithm). One buffer per thread, reused

@@ -8,6 +8,8 @@
 #include <utility>
 
 #include "toroid/shapes/bounds.h"
+#include "toroid/shapes/csg.h"
+#include "toroid/shapes/group.h"
 #include "toroid/shapes/plane.h"
 #include "toroid/shapes/shape.h"
 
@@ -59,6 +61,16 @@ bool plane_hit(const Plane& p, const Ray& ray, double& t) {
   return Plane::hit_at(a.row(1, ray.origin), a.row(1, ray.direction), t);
 }
 
+// Whether `s` or a shape below it refracts.
+bool has_transparent(const Shape& s) {
+  if (s.material().transparency > 0) return true;
+  if (const auto* g = dynamic_cast<const Group*>(&s))
+    for (const auto& child : g->children())
+      if (has_transparent(*child)) return true;
+  if (const auto* c = dynamic_cast<const Csg*>(&s)) return has_transparent(*c->left()) || has_transparent(*c->right());
+  return false;
+}
+
 }  // namespace
 
 struct ShapeBvh::Item {
@@ -98,6 +110,7 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shape
   std::vector<Item> items;
   items.reserve(shapes.size());
   for (const auto& s : shapes) {
+    if (has_transparent(*s)) any_transparent_ = true;
     const BoundingBox b = s->parent_space_bounds();
     if (b.empty()) continue;  // nothing to hit (an empty group)
     if (!is_bounded(b)) {

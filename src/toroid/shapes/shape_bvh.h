@@ -42,6 +42,9 @@ class ShapeBvh {
   // the indexed shape that blocks.
   bool blocks(const Ray& ray, double t_max, const Shape** blocker = nullptr) const;
 
+  // Whether some indexed shape, or a shape below one, is transparent (has
+  // refraction): then shading needs intersect_up_to_hit.
+  bool any_transparent() const { return any_transparent_; }
   // Replaces xs with the intersections, sorted by t, of the shapes whose
   // box the ray's line meets before the nearest hit (t >= 0) is passed: at
   // least every intersection up to the hit, negative t included, which is
@@ -73,6 +76,7 @@ class ShapeBvh {
   std::vector<const Shape*> unbounded_;  // other unbounded shapes, likewise
   std::size_t size_ = 0;
   std::uint64_t serial_ = 0;
+  bool any_transparent_ = false;
 };
 
 }  // namespace toroid

@@ -121,6 +121,17 @@ TEST(ShapeBvh, ListUpToTheHitHoldsEveryIntersectionBeforeIt) {
   }
 }
 
+TEST(ShapeBvh, KnowsWhetherSomethingBelowRefracts) {
+  auto shapes = scattered_shapes();
+  EXPECT_FALSE(ShapeBvh(shapes).any_transparent());
+  auto g = std::dynamic_pointer_cast<Group>(shapes[shapes.size() - 4]);
+  ASSERT_TRUE(g);
+  Material glass;
+  glass.transparency = 0.5;
+  g->children()[0]->set_material(glass);
+  EXPECT_TRUE(ShapeBvh(shapes).any_transparent());
+}
+
 TEST(ShapeBvh, SeesNothingWhenEmpty) {
   const ShapeBvh bvh;
   Intersection h;
