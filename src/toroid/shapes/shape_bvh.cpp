@@ -336,7 +336,7 @@ void ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
     if (t >= 0 && t < t_hit) t_hit = t;
   }
   for (const Shape* s : unbounded_) add_shape(s);
-  walk(ray, -BoundingBox::kInf, t_hit, add_shape);
+  walk(ray, 0, t_hit, add_shape);
   sort_intersections(xs);
 }
 

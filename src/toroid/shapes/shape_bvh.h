@@ -46,9 +46,12 @@ class ShapeBvh {
   // refraction): then shading needs intersect_up_to_hit.
   bool any_transparent() const { return any_transparent_; }
   // Replaces xs with the intersections, sorted by t, of the shapes whose
-  // box the ray's line meets before the nearest hit (t >= 0) is passed: at
-  // least every intersection up to the hit, negative t included, which is
-  // what the containers algorithm (prepare_computations) reads.
+  // box the ray meets (t >= 0) before the nearest hit is passed: every
+  // intersection up to the hit of the shapes around and ahead of the
+  // origin, negative t included, which is what the containers algorithm
+  // (prepare_computations) reads. Shapes wholly behind the origin are left
+  // out: a closed surface there is entered and left, and changes no
+  // container (the book lists them; they cost cover.yml 13% of its time).
   void intersect_up_to_hit(const Ray& ray, Intersections& xs) const;
 
   // Memory the index holds (nodes and shape lists), for the memory report.
