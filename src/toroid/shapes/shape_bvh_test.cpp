@@ -64,6 +64,14 @@ std::vector<Ray> random_rays(int n) {
   return rays;
 }
 
+// The book's list: every intersection of every shape along the ray's line.
+Intersections line_intersections(const std::vector<std::shared_ptr<Shape>>& shapes, const Ray& ray) {
+  Intersections all;
+  for (const auto& s : shapes) s->intersect(ray, all);
+  sort_intersections(all);
+  return all;
+}
+
 TEST(ShapeBvh, NearestHitIsTheOneEveryShapeGives) {
   const auto shapes = scattered_shapes();
   const ShapeBvh bvh(shapes);
@@ -106,9 +114,7 @@ TEST(ShapeBvh, ListUpToTheHitHoldsEveryIntersectionBeforeItOfShapesNotBehind) {
   Intersections got;
   int left_out = 0;
   for (const Ray& ray : random_rays(2000)) {
-    Intersections all;
-    for (const auto& s : shapes) s->intersect(ray, all);
-    sort_intersections(all);
+    const Intersections all = line_intersections(shapes, ray);
     bvh.intersect_up_to_hit(ray, got);
     ASSERT_TRUE(std::is_sorted(got.begin(), got.end(), [](auto& a, auto& b) { return a.t < b.t; }));
     const Intersection* h = hit(all);
@@ -148,9 +154,7 @@ TEST(ShapeBvh, ListUpToTheHitGivesTheContainersOfTheWholeLine) {
   Intersections got;
   int compared = 0;
   for (const Ray& ray : random_rays(12000)) {
-    Intersections all;
-    for (const auto& s : shapes) s->intersect(ray, all);
-    sort_intersections(all);
+    const Intersections all = line_intersections(shapes, ray);
     const Intersection* h = hit(all);
     if (!h) continue;
     bvh.intersect_up_to_hit(ray, got);
