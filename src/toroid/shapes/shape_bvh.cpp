@@ -44,12 +44,15 @@ bool is_bounded(const BoundingBox& b) {
 struct SlabRay {
   double origin[3];
   double inv[3];
-  bool negative[3];  // inv < 0: the ray meets the high side of a slab first
+  // Where in a node's box the side of each slab that the ray meets first
+  // (near) and last (far) is: the high side first when inv < 0.
+  int near[3], far[3];
   double t_min;
   SlabRay(const Ray& r, double from)
       : origin{r.origin.x, r.origin.y, r.origin.z},
         inv{1.0 / r.direction.x, 1.0 / r.direction.y, 1.0 / r.direction.z},
-        negative{inv[0] < 0, inv[1] < 0, inv[2] < 0},
+        near{inv[0] < 0 ? 3 : 0, inv[1] < 0 ? 4 : 1, inv[2] < 0 ? 5 : 2},
+        far{inv[0] < 0 ? 0 : 3, inv[1] < 0 ? 1 : 4, inv[2] < 0 ? 2 : 5},
         t_min(from) {}
 };
 
@@ -90,10 +93,8 @@ template <typename Node>
 bool enters(const Node& n, const SlabRay& r, double t_max, double& entry) {
   double tmin = r.t_min, tmax = t_max;
   for (int a = 0; a < 3; ++a) {
-    const double near = r.negative[a] ? n.hi[a] : n.lo[a];
-    const double far = r.negative[a] ? n.lo[a] : n.hi[a];
-    const double t0 = (near - r.origin[a]) * r.inv[a];
-    const double t1 = (far - r.origin[a]) * r.inv[a];
+    const double t0 = (static_cast<double>(n.box[r.near[a]]) - r.origin[a]) * r.inv[a];
+    const double t1 = (static_cast<double>(n.box[r.far[a]]) - r.origin[a]) * r.inv[a];
     tmin = t0 > tmin ? t0 : tmin;
     tmax = t1 < tmax ? t1 : tmax;
   }
@@ -209,8 +210,8 @@ std::uint32_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std::
     centres.add_point(point(items[i].centre[0], items[i].centre[1], items[i].centre[2]));
   }
   const auto index = static_cast<std::uint32_t>(nodes_.size());
-  Node node{{round_down(box.min.x), round_down(box.min.y), round_down(box.min.z)},
-            {round_up(box.max.x), round_up(box.max.y), round_up(box.max.z)},
+  Node node{{round_down(box.min.x), round_down(box.min.y), round_down(box.min.z), round_up(box.max.x),
+             round_up(box.max.y), round_up(box.max.z)},
             0,
             0};
   const double extent[3] = {centres.max.x - centres.min.x, centres.max.y - centres.min.y,

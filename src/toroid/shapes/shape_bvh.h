@@ -60,7 +60,7 @@ class ShapeBvh {
  private:
   // Boxes in float, rounded outwards, so that a node takes 32 bytes.
   struct Node {
-    float lo[3], hi[3];
+    float box[6];  // low x, y, z, then high x, y, z
     // Leaf (count > 0): shapes_[first .. first + count). Interior (count 0):
     // children at this node's index + 1 and at `first`.
     std::uint32_t first;
