@@ -124,6 +124,7 @@ TEST(ShapeBvh, ListUpToTheHitHoldsEveryIntersectionBeforeItOfShapesNotBehind) {
     const auto behind = [&](const Shape* s) {
       return std::none_of(all.begin(), all.end(), [&](const Intersection& x) { return x.object == s && x.t >= 0; });
     };
+    for (const Intersection& x : got) ASSERT_LE(x.t, t_hit);  // nothing beyond the hit
     std::size_t j = 0;
     for (const Intersection& x : all) {
       if (x.t > t_hit) break;
