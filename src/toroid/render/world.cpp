@@ -141,8 +141,12 @@ Color color_at(const World& world, const Ray& ray, int remaining) {
     intersect_world(world, ray, xs);
   const Intersection* h = hit(xs);
   if (h == nullptr) return kBlack;
-  const Computations comps = prepare_computations(*h, ray, xs);
-  return shade_hit(world, comps, remaining);
+  // Only a refracting hit reads n1 and n2 (refracted_color, schlick): the
+  // list is sorted, and the containers walked, for those alone.
+  if (h->object->material().transparency == 0) return shade_hit(world, prepare_computations(*h, ray), remaining);
+  const Intersection found = *h;
+  sort_intersections(xs);
+  return shade_hit(world, prepare_computations(found, ray, xs), remaining);
 }
 
 Color reflected_color(const World& world, const Computations& comps, int remaining) {

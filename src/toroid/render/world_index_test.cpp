@@ -2,10 +2,13 @@
 // what they see.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
+#include <vector>
 
 #include "toroid/math/transform.h"
 #include "toroid/render/camera.h"
+#include "toroid/render/computations.h"
 #include "toroid/render/world.h"
 #include "toroid/shapes/plane.h"
 #include "toroid/shapes/sphere.h"
@@ -59,6 +62,43 @@ void expect_same_picture_with_and_without_index(World w) {
 TEST(WorldIndex, OpaqueTorusWorldLooksTheSame) { expect_same_picture_with_and_without_index(torus_world(false)); }
 
 TEST(WorldIndex, GlassTorusWorldLooksTheSame) { expect_same_picture_with_and_without_index(torus_world(true)); }
+
+TEST(WorldIndex, ColorAtIsTheBooksWithTheWholeList) {
+  // color_at takes shortcuts (the list only up to the hit and unsorted,
+  // the containers only for a refracting hit); the book shades every ray
+  // from the sorted list of all intersections. Camera rays, and rays from
+  // inside the glass tori (their hits leave the glass: n1 is the glass's).
+  World w = torus_world(true);
+  index_objects(w);
+  Camera camera(48, 32, 1.0);
+  camera.set_transform(view_transform(point(0, 2, -6), point(0, 0, 0.5), vector(0, 1, 0)));
+  std::vector<Ray> rays;
+  for (int y = 0; y < camera.vsize(); ++y)
+    for (int x = 0; x < camera.hsize(); ++x) rays.push_back(camera.ray_for_pixel(x, y));
+  for (const auto& object : w.objects) {
+    const auto* t = dynamic_cast<const Torus*>(object.get());
+    if (t == nullptr || t->material().transparency == 0) continue;
+    for (int i = 0; i < 40; ++i) {
+      const double a = 0.157 * i;  // around the tube's centre circle, inside the glass
+      const Tuple inside = t->transform() * point(0.8 * std::cos(a), 0.8 * std::sin(a), 0);
+      rays.push_back({inside, normalize(vector(std::cos(3 * a), 0.5, std::sin(5 * a)))});
+    }
+  }
+  int leaving_glass = 0;
+  for (const Ray& ray : rays) {
+    Intersections xs;
+    intersect_world(w, ray, xs);
+    const Intersection* h = hit(xs);
+    const Computations book_comps = h ? prepare_computations(*h, ray, xs) : Computations{};
+    const Color book = h ? shade_hit(w, book_comps) : Color{0, 0, 0};
+    const Color got = color_at(w, ray);
+    ASSERT_EQ(got.r, book.r);
+    ASSERT_EQ(got.g, book.g);
+    ASSERT_EQ(got.b, book.b);
+    leaving_glass += h && book_comps.n1 > 1;
+  }
+  EXPECT_GT(leaving_glass, 50);
+}
 
 TEST(WorldIndex, IsIgnoredOnceObjectsAreAdded) {
   World w = torus_world(false);

@@ -338,10 +338,9 @@ void ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
   }
   for (const Shape* s : unbounded_) add_shape(s);
   walk(ray, 0, t_hit, add_shape);
-  // What lies beyond the hit is never read: sort only the rest (a room's
-  // walls put six intersections on every line).
+  // What lies beyond the hit is never read (a room's walls put six
+  // intersections on every line).
   std::erase_if(xs, [t_hit](const Intersection& x) { return x.t > t_hit; });
-  sort_intersections(xs);
 }
 
 std::size_t ShapeBvh::bytes() const {
