@@ -7,8 +7,8 @@
 # equivalent POV-Ray file: same camera, lights, tori, resolution, one sample
 # per pixel, POV-Ray without anti-aliasing, the same trace depth) it renders
 # with toroid and with POV-Ray, `sturm` on and off, at each thread count, and
-# prints the CPU time (user + sys, the least of --reps runs) of each and the
-# ratios. Start-up is measured alone and subtracted, for both programs: the
+# prints the CPU time (user + sys, the least of --reps runs, the programs
+# taking turns) of each and the ratios. Start-up is measured alone and subtracted, for both programs: the
 # same scene at 1x1 pixel (POV-Ray: parsing and bounding; toroid: loading
 # and indexing). Then it renders flat-white masks of the tori (silhouettes)
 # with both and counts the pixels that differ.
@@ -47,18 +47,24 @@ out=$(cd "$out" && pwd)
 g++ -O2 -std=c++20 -o "$out/image_diff" "$here/image_diff.cpp"
 rm -f "$out/timings.txt" "$out/masks.txt"
 
+# cpu_once CMD...: the user + sys time of one run.
+cpu_once() {
+  /usr/bin/time -f "%U %S" -o "$out/time.txt" "$@" >/dev/null 2>"$out/stderr.txt" || {
+    echo "run.sh: failed: $*" >&2
+    cat "$out/stderr.txt" >&2
+    exit 1
+  }
+  awk '{ printf "%.3f", $1 + $2 }' "$out/time.txt"
+}
+# least A B: the smaller number (B when A is empty).
+least() { awk -v a="$1" -v b="$2" 'BEGIN { print (a == "" || b + 0 < a + 0) ? b : a }'; }
 # cpu_seconds REPS CMD...: the least user + sys time of REPS runs.
 cpu_seconds() {
   local n=$1 best="" t
   shift
   for ((i = 0; i < n; i++)); do
-    /usr/bin/time -f "%U %S" -o "$out/time.txt" "$@" >/dev/null 2>"$out/stderr.txt" || {
-      echo "run.sh: failed: $*" >&2
-      cat "$out/stderr.txt" >&2
-      exit 1
-    }
-    t=$(awk '{ printf "%.3f", $1 + $2 }' "$out/time.txt")
-    if [ -z "$best" ] || awk -v a="$t" -v b="$best" 'BEGIN { exit !(a < b) }'; then best=$t; fi
+    t=$(cpu_once "$@")  # on its own line: set -e stops the script when a run fails
+    best=$(least "$best" "$t")
   done
   echo "$best"
 }
@@ -84,9 +90,17 @@ for s in $scenes; do
   p0=$(cpu_seconds "$reps" "${pov[@]}" +FN +I"$s-sturm.pov" +O"$s-1x1.png" +W1 +H1 +WT1)
   q0=$(cpu_seconds "$reps" "${pov[@]}" +FN +I"$s-plain.pov" +O"$s-1x1.png" +W1 +H1 +WT1)
   for t in $threads; do
-    tt=$(cpu_seconds "$reps" "$toroid" render "$out/$s.yaml" -o "$out/$s-toroid.png" --threads "$t" --max-depth $depth -q)
-    pt=$(cpu_seconds "$reps" "${pov[@]}" +FN +I"$s-sturm.pov" +O"$s-pov-sturm.png" +W"$w" +H"$h" +WT"$t")
-    qt=$(cpu_seconds "$reps" "${pov[@]}" +FN +I"$s-plain.pov" +O"$s-pov-plain.png" +W"$w" +H"$h" +WT"$t")
+    # The three programs take turns, so that a slow spell of the machine
+    # (its speed drifts by 10-30% over minutes) falls on all of them.
+    tt="" pt="" qt=""
+    for ((r = 0; r < reps; r++)); do
+      x=$(cpu_once "$toroid" render "$out/$s.yaml" -o "$out/$s-toroid.png" --threads "$t" --max-depth $depth -q)
+      tt=$(least "$tt" "$x")
+      x=$(cpu_once "${pov[@]}" +FN +I"$s-sturm.pov" +O"$s-pov-sturm.png" +W"$w" +H"$h" +WT"$t")
+      pt=$(least "$pt" "$x")
+      x=$(cpu_once "${pov[@]}" +FN +I"$s-plain.pov" +O"$s-pov-plain.png" +W"$w" +H"$h" +WT"$t")
+      qt=$(least "$qt" "$x")
+    done
     tt=$(minus "$tt" "$t0"); pt=$(minus "$pt" "$p0"); qt=$(minus "$qt" "$q0")
     render_cpu[$s,$t]=$tt
     printf '%-12s %3s %9s %9s %9s %8s %8s\n' "$s" "$t" "$tt" "$pt" "$qt" "$(ratio "$pt" "$tt")" "$(ratio "$qt" "$tt")"
