@@ -3,7 +3,11 @@
 // 1e-10 r for the far, thin and large families. The reference is MPFR.
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <vector>
+
 #include "accuracy/harness.h"
+#include "toroid/shapes/torus_intersect.h"
 
 namespace toroid::accuracy {
 namespace {
@@ -33,6 +37,36 @@ INSTANTIATE_TEST_SUITE_P(Families, AccuracyBars, ::testing::Range(0, 13),
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return n;
                          });
+
+// Shadow rays ask torus_blocks whether a root lies in (t_min, t_max); it
+// skips refining roots, never the decision: the same answer as the nearest-
+// root query on every ray of every family (grazing and far ones included),
+// for windows that end just before, between and just after the roots.
+TEST(ShadowQuery, AgreesWithTheNearestRootOnEveryFamily) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  int decided = 0, blocked = 0;
+  for (const Family& f : families())
+    for (const RayCase& c : f.rays) {
+      double all[4];
+      const int n = intersect_torus(c.major, c.minor, c.origin, c.direction, all);
+      std::vector<double> ends = {-kInf, -1e-300, 0.0, kInf};
+      for (int i = 0; i < n; ++i)
+        for (const double k : {1 - 1e-9, 1.0, 1 + 1e-9}) ends.push_back(all[i] * k + (all[i] == 0 ? k - 1 : 0));
+      for (int i = 0; i + 1 < n; ++i) ends.push_back(0.5 * (all[i] + all[i + 1]));
+      for (const double lo : ends)
+        for (const double hi : ends) {
+          if (!(lo < hi)) continue;
+          double t;
+          const bool nearest = intersect_torus_nearest(c.major, c.minor, c.origin, c.direction, lo, hi, &t);
+          ASSERT_EQ(torus_blocks(c.major, c.minor, c.origin, c.direction, lo, hi), nearest)
+              << f.name << " window (" << lo << ", " << hi << ")";
+          ++decided;
+          blocked += nearest;
+        }
+    }
+  EXPECT_GT(blocked, decided / 4);
+  EXPECT_GT(decided - blocked, decided / 4);
+}
 
 TEST(AccuracyHarness, FamilyCountMatchesTheParameterRange) { EXPECT_EQ(families().size(), 13u); }
 

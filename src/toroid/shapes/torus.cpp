@@ -11,6 +11,9 @@ namespace toroid {
 
 namespace {
 
+// The queries' interval is open: just below 0 admits t = 0, as hit() does.
+constexpr double kBelowZero = -std::numeric_limits<double>::denorm_min();
+
 // Extremes of cos and sin over the angles [lo, hi]: at the ends or at the
 // multiples of pi/2 inside, whose values are taken exactly.
 struct TrigRange {
@@ -124,8 +127,6 @@ int Torus::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
 }
 
 bool Torus::nearest_root(const Ray& ray, double t_max, double& t) const {
-  // The query's interval is open: just below 0 admits t = 0, as hit() does.
-  constexpr double kBelowZero = -std::numeric_limits<double>::denorm_min();
   // Most rays that reach a torus's box miss the torus, or meet it beyond
   // t_max (a nearer hit, the light): the washer turns them away cheaply.
   if (!washer().may_meet(ray.origin, ray.direction, kBelowZero, t_max)) return false;
@@ -144,8 +145,10 @@ bool Torus::local_intersect_nearest(const Ray& ray, double t_max, Intersection& 
 
 bool Torus::local_blocks(const Ray& ray, double t_max) const {
   if (!keeps_all_) return Primitive<Torus>::local_blocks(ray, t_max);
-  double t;
-  return nearest_root(ray, t_max, t);
+  if (!washer().may_meet(ray.origin, ray.direction, kBelowZero, t_max)) return false;
+  const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+  const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+  return torus_blocks(major_, minor_, o, d, kBelowZero, t_max, solver_);
 }
 
 Tuple Torus::local_normal_at(const Tuple& p, const Intersection&) const {

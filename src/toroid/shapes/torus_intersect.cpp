@@ -194,7 +194,9 @@ class RootCollector {
   int count() const { return n_; }
 
   // Roots on the piece [a.s, b.s). A zero exactly at b.s counts only if `last`.
-  void piece(const Sample& a, const Sample& b, double sigma, bool last) {
+  // With `locate` false only whether there are roots matters (shadow rays):
+  // a point of the piece stands for each root found, unrefined.
+  void piece(const Sample& a, const Sample& b, double sigma, bool last, bool locate = true) {
     if (a.s == b.s) {  // a single point: the horn torus's centre
       if (a.h == 0) push(a.s);
       return;
@@ -208,9 +210,9 @@ class RootCollector {
     if (pos_a != pos_b) {
       // One root. Newton from the end where g > 0 (Fourier's condition: g
       // and g'' agree) converges without overshoot.
-      push(root(a, b, pos_a ? a : b, pos_a == (sigma < 0), false));
+      push(locate ? root(a, b, pos_a ? a : b, pos_a == (sigma < 0), false) : a.s);
     } else if (pos_a && sigma * a.dh < 0 && sigma * b.dh > 0) {
-      two_or_none(a, b, sigma);
+      two_or_none(a, b, sigma, locate);
     }
     if (b.h == 0 && last) push(b.s);
   }
@@ -220,7 +222,7 @@ class RootCollector {
   // tangents at the ends bound g from below; where they cross, either the
   // bound is positive (no root), or g is negative (a root on each side), or
   // g is positive and the piece shrinks to the side holding the minimum.
-  void two_or_none(Sample a, Sample b, double sigma) {
+  void two_or_none(Sample a, Sample b, double sigma, bool locate) {
     const double scale = f_.minor() * f_.minor();
     for (int it = 0; it < 8; ++it) {
       const double ga = sigma * a.h, gb = sigma * b.h, dga = sigma * a.dh, dgb = sigma * b.dh;
@@ -233,20 +235,20 @@ class RootCollector {
       // ill-conditioned in double (and g(m) >= the minimum): settle it precisely.
       if (std::abs(gm) < 1e-6 * scale) break;
       if (gm < 0) {
-        push(root(a, m, a, sigma < 0, false));
-        push(root(m, b, b, sigma > 0, false));
+        push(locate ? root(a, m, a, sigma < 0, false) : m.s);
+        push(locate ? root(m, b, b, sigma > 0, false) : m.s);
         return;
       }
       const double dgm = sigma * m.dh;
       if (dgm == 0) return;  // the minimum, and it is positive
       (dgm < 0 ? a : b) = m;
     }
-    near_tangent(a, b, sigma);
+    near_tangent(a, b, sigma, locate);
   }
 
   // The minimum of g is within rounding of zero (a near-tangent ray): find
   // it by Newton on g' and decide its sign in double-double.
-  void near_tangent(const Sample& a, const Sample& b, double sigma) {
+  void near_tangent(const Sample& a, const Sample& b, double sigma, bool locate) {
     double x0 = (b.h - a.h + a.dh * a.s - b.dh * b.s) / (a.dh - b.dh);
     if (!(x0 > a.s && x0 < b.s)) x0 = 0.5 * (a.s + b.s);
     const double m = solve_monotone(
@@ -263,8 +265,8 @@ class RootCollector {
     }
     if (sigma * hm > 0) return;
     const Sample sm{m, hm, 0.0, 0.0, 0.0};
-    push(root(a, sm, a, sigma < 0, true));
-    push(root(sm, b, b, sigma > 0, true));
+    push(locate ? root(a, sm, a, sigma < 0, true) : m);
+    push(locate ? root(sm, b, b, sigma > 0, true) : m);
   }
 
   // The root of h on (a.s, b.s), where h changes sign once; Newton starts
@@ -313,11 +315,16 @@ class RootCollector {
   int n_ = 0;
 };
 
+// What a search wants: every root, the first one in the window, or only
+// whether the window holds one (then a piece inside the window stops the
+// search as soon as it holds a root, with a point of it for the root).
+enum class Search { All, First, Any };
+
 // Roots of one factor inside the ball |p| <= radius, in the shifted frame,
 // ascending, restricted to [s_min, s_max]. Pieces wholly outside that window
-// are skipped, and with `first_only` the search stops at the first root.
+// are skipped; see Search.
 int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3], double radius,
-                 double s_min, double s_max, bool first_only, double* out) {
+                 double s_min, double s_max, Search search, double* out) {
   // Ball: dd s^2 + 2 b s + (|o|^2 - radius^2) = 0. The origin is the ray's
   // point nearest the centre, so b is ~0 and the chord is well conditioned.
   const double b = o[0].hi * d[0] + o[1].hi * d[1] + o[2].hi * d[2];
@@ -380,8 +387,9 @@ int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3
     if (cuts[i + 1] >= s_min && cuts[i] <= s_max) {
       const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
       const double sigma = mid > concave_lo && mid < concave_hi ? -1.0 : 1.0;
-      collector.piece(start, end, sigma, i + 1 == ncut);
-      if (first_only) {
+      const bool inside_window = cuts[i] > s_min && cuts[i + 1] < s_max;
+      collector.piece(start, end, sigma, i + 1 == ncut, !(search == Search::Any && inside_window));
+      if (search != Search::All) {
         for (int k = 0; k < collector.count(); ++k)
           if (out[k] > s_min && out[k] < s_max) return collector.count();
       }
@@ -408,16 +416,17 @@ ShiftedRay shift_to_nearest_centre_point(const double origin[3], const double d[
 }
 
 int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
-                  bool first_only, double t[4]) {
+                  Search search, double t[4]) {
   const ShiftedRay ray = shift_to_nearest_centre_point(origin, d);
   const double s_min = t_min - ray.t_shift, s_max = t_max - ray.t_shift;
   double s_out[4], s_in[4];
   const TorusFactor outer(ray.o, d, R, r, -1.0);
-  int n_out = factor_roots(outer, ray.o, d, R + r, s_min, s_max, first_only && r < R, s_out);
+  // With the lemon's roots to merge, the outer sheet's are all needed.
+  int n_out = factor_roots(outer, ray.o, d, R + r, s_min, s_max, r < R ? search : Search::All, s_out);
   int n_in = 0;
   if (r >= R) {  // the spindle's lemon (a point for the horn torus)
     const TorusFactor inner(ray.o, d, R, r, +1.0);
-    n_in = factor_roots(inner, ray.o, d, std::sqrt((r - R) * (r + R)), s_min, s_max, false, s_in);
+    n_in = factor_roots(inner, ray.o, d, std::sqrt((r - R) * (r + R)), s_min, s_max, Search::All, s_in);
   }
   // Merge the two ascending lists.
   int n = 0, i = 0, j = 0;
@@ -453,7 +462,7 @@ void torus_quartic_coefficients(double R, double r, const double o[3], const dou
 int intersect_torus(double major, double minor, const double origin[3], const double direction[3], double t[4],
                     QuarticSolver solver) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  if (solver == QuarticSolver::Default) return solve_default(major, minor, origin, direction, -kInf, kInf, false, t);
+  if (solver == QuarticSolver::Default) return solve_default(major, minor, origin, direction, -kInf, kInf, Search::All, t);
   double k[5];
   torus_quartic_coefficients(major, minor, origin, direction, k);
   const int n = solver == QuarticSolver::Ferrari ? solve_quartic_ferrari(k[0], k[1], k[2], k[3], k[4], t)
@@ -462,11 +471,14 @@ int intersect_torus(double major, double minor, const double origin[3], const do
   return n;
 }
 
-bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
-                             double t_min, double t_max, double* t, QuarticSolver solver) {
+namespace {
+
+// The first root in (t_min, t_max), to the search's precision.
+bool first_root_in(double major, double minor, const double origin[3], const double direction[3], double t_min,
+                   double t_max, double* t, QuarticSolver solver, Search search) {
   double roots[4];
   const int n = solver == QuarticSolver::Default
-                    ? solve_default(major, minor, origin, direction, t_min, t_max, true, roots)
+                    ? solve_default(major, minor, origin, direction, t_min, t_max, search, roots)
                     : intersect_torus(major, minor, origin, direction, roots, solver);
   for (int i = 0; i < n; ++i)
     if (roots[i] > t_min && roots[i] < t_max) {
@@ -474,6 +486,19 @@ bool intersect_torus_nearest(double major, double minor, const double origin[3],
       return true;
     }
   return false;
+}
+
+}  // namespace
+
+bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
+                             double t_min, double t_max, double* t, QuarticSolver solver) {
+  return first_root_in(major, minor, origin, direction, t_min, t_max, t, solver, Search::First);
+}
+
+bool torus_blocks(double major, double minor, const double origin[3], const double direction[3], double t_min,
+                  double t_max, QuarticSolver solver) {
+  double t;
+  return first_root_in(major, minor, origin, direction, t_min, t_max, &t, solver, Search::Any);
 }
 
 void torus_normal(double R, double r, const double p[3], double n[3]) {

@@ -25,6 +25,12 @@ bool intersect_torus_nearest(double major, double minor, const double origin[3],
                              double t_min, double t_max, double* t,
                              QuarticSolver solver = QuarticSolver::Default);
 
+// Whether some root lies in the open interval (t_min, t_max): the answer of
+// intersect_torus_nearest, for shadow rays, which need no root's position
+// (a root found on a stretch of the ray inside the interval is not refined).
+bool torus_blocks(double major, double minor, const double origin[3], const double direction[3], double t_min,
+                  double t_max, QuarticSolver solver = QuarticSolver::Default);
+
 // The quartic a t^4 + b t^3 + c t^2 + d t + e of the seed paper, formed
 // directly from the inputs (coeffs[0] = a ... coeffs[4] = e). The closed-form
 // solvers use it; the default solver does not (see docs/torus.md).
