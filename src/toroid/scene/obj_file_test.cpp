@@ -29,6 +29,14 @@ const Triangle& triangle(const std::shared_ptr<Group>& g, std::size_t i) {
 const Tuple& vertex(const ObjFile& obj, std::size_t book_index) { return obj.vertices.at(book_index - 1); }
 const Tuple& normal(const ObjFile& obj, std::size_t book_index) { return obj.normals.at(book_index - 1); }
 
+// "t.p1 = parser.vertices[a]", and so on for p2 and p3.
+template <typename T>
+void expect_corners(const T& t, const ObjFile& parser, std::size_t a, std::size_t b, std::size_t c) {
+  EXPECT_APPROX(t.p1(), vertex(parser, a));
+  EXPECT_APPROX(t.p2(), vertex(parser, b));
+  EXPECT_APPROX(t.p3(), vertex(parser, c));
+}
+
 TEST(ObjFileParser, IgnoringUnrecognizedLines) {
   // tinyobjloader does not count the lines it ignores; what can be observed
   // is that all five are ignored without error and yield nothing.
@@ -54,12 +62,8 @@ TEST(ObjFileParser, ParsingTriangleFaces) {
   ASSERT_EQ(g->size(), 2u);
   const Triangle& t1 = triangle(g, 0);
   const Triangle& t2 = triangle(g, 1);
-  EXPECT_APPROX(t1.p1(), vertex(parser, 1));
-  EXPECT_APPROX(t1.p2(), vertex(parser, 2));
-  EXPECT_APPROX(t1.p3(), vertex(parser, 3));
-  EXPECT_APPROX(t2.p1(), vertex(parser, 1));
-  EXPECT_APPROX(t2.p2(), vertex(parser, 3));
-  EXPECT_APPROX(t2.p3(), vertex(parser, 4));
+  expect_corners(t1, parser, 1, 2, 3);
+  expect_corners(t2, parser, 1, 3, 4);
 }
 
 TEST(ObjFileParser, TriangulatingPolygons) {
@@ -69,15 +73,9 @@ TEST(ObjFileParser, TriangulatingPolygons) {
   const Triangle& t1 = triangle(g, 0);
   const Triangle& t2 = triangle(g, 1);
   const Triangle& t3 = triangle(g, 2);
-  EXPECT_APPROX(t1.p1(), vertex(parser, 1));
-  EXPECT_APPROX(t1.p2(), vertex(parser, 2));
-  EXPECT_APPROX(t1.p3(), vertex(parser, 3));
-  EXPECT_APPROX(t2.p1(), vertex(parser, 1));
-  EXPECT_APPROX(t2.p2(), vertex(parser, 3));
-  EXPECT_APPROX(t2.p3(), vertex(parser, 4));
-  EXPECT_APPROX(t3.p1(), vertex(parser, 1));
-  EXPECT_APPROX(t3.p2(), vertex(parser, 4));
-  EXPECT_APPROX(t3.p3(), vertex(parser, 5));
+  expect_corners(t1, parser, 1, 2, 3);
+  expect_corners(t2, parser, 1, 3, 4);
+  expect_corners(t3, parser, 1, 4, 5);
 }
 
 TEST(ObjFileParser, TrianglesInGroups) {
@@ -89,12 +87,8 @@ TEST(ObjFileParser, TrianglesInGroups) {
   ASSERT_NE(g2, nullptr);
   const Triangle& t1 = triangle(g1, 0);
   const Triangle& t2 = triangle(g2, 0);
-  EXPECT_APPROX(t1.p1(), vertex(parser, 1));
-  EXPECT_APPROX(t1.p2(), vertex(parser, 2));
-  EXPECT_APPROX(t1.p3(), vertex(parser, 3));
-  EXPECT_APPROX(t2.p1(), vertex(parser, 1));
-  EXPECT_APPROX(t2.p2(), vertex(parser, 3));
-  EXPECT_APPROX(t2.p3(), vertex(parser, 4));
+  expect_corners(t1, parser, 1, 2, 3);
+  expect_corners(t2, parser, 1, 3, 4);
 }
 
 TEST(ObjFileParser, ConvertingAnObjFileToAGroup) {
@@ -126,9 +120,7 @@ TEST(ObjFileParser, FacesWithNormals) {
   const auto* t2 = dynamic_cast<const SmoothTriangle*>(g->children()[1].get());
   ASSERT_NE(t1, nullptr);
   ASSERT_NE(t2, nullptr);
-  EXPECT_APPROX(t1->p1(), vertex(parser, 1));
-  EXPECT_APPROX(t1->p2(), vertex(parser, 2));
-  EXPECT_APPROX(t1->p3(), vertex(parser, 3));
+  expect_corners(*t1, parser, 1, 2, 3);
   EXPECT_APPROX(t1->n1(), normal(parser, 3));
   EXPECT_APPROX(t1->n2(), normal(parser, 1));
   EXPECT_APPROX(t1->n3(), normal(parser, 2));

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "support/approx.h"
+#include "support/scene_text.h"
 #include "support/temp_dir.h"
 #include "toroid/io/image_writer.h"
 #include "toroid/render/pattern.h"
@@ -18,14 +19,7 @@ namespace {
 
 using testing::TempDir;
 
-const std::string kCamera =
-    "- add: camera\n"
-    "  width: 40\n"
-    "  height: 30\n"
-    "  field-of-view: 0.8\n"
-    "  from: [0, 2, -5]\n"
-    "  to: [0, 0, 0]\n"
-    "  up: [0, 1, 0]\n";  // 7 lines: the items below start on line 8
+const std::string& kCamera = testing::kSceneCamera;  // 7 lines: the items below start on line 8
 
 class MapPatterns : public ::testing::Test {
  protected:

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/scene_text.h"
 #include "support/shared_dir.h"
 
 #include <cmath>
@@ -121,17 +122,8 @@ class SceneFiles : public ::testing::Test {
   std::string path_;
 };
 
-const std::string kCamera =
-    "- add: camera\n"
-    "  width: 40\n"
-    "  height: 30\n"
-    "  field-of-view: 0.8\n"
-    "  from: [0, 2, -5]\n"
-    "  to: [0, 0, 0]\n"
-    "  up: [0, 1, 0]\n"
-    "- add: light\n"
-    "  at: [-10, 10, -10]\n"
-    "  intensity: [1, 1, 1]\n";
+// 10 lines: the items below start on line 11.
+const std::string kCamera = testing::kSceneCamera + testing::kSceneLight;
 
 TEST_F(SceneFiles, LoadsATorusWithDefinesAndCsg) {
   const std::string p = write("t.yml", kCamera +
