@@ -16,11 +16,10 @@
 namespace toroid {
 namespace {
 
-// Leaves hold at most this many shapes. One: a shape test (a torus above
-// all) costs far more than a box test, and the leaf's box is the shape's
-// own (measured with callgrind on the 25-tori scene: leaves of 1, 2 and 4
-// shapes cost 754, 778 and 865 million instructions).
-constexpr std::size_t kLeafSize = 1;
+// Leaves hold one shape each: a shape test (a torus above all) costs far
+// more than a box test, and the leaf's box is the shape's own (measured with
+// callgrind on the 25-tori scene: leaves of 1, 2 and 4 shapes cost 754, 778
+// and 865 million instructions; scatter2000 +40% with 2).
 // Deeper than any median-split tree over 2^32 shapes.
 constexpr int kStackSize = 64;
 
@@ -125,8 +124,7 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shape
     items.push_back(it);
   }
   if (items.empty()) return;
-  nodes_.reserve(2 * items.size() / kLeafSize + 1);
-  shapes_.reserve(items.size());
+  nodes_.reserve(2 * items.size() - 1);
   build(items, 0, items.size());
   nodes_.shrink_to_fit();
 }
@@ -212,23 +210,20 @@ std::uint32_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std::
   const auto index = static_cast<std::uint32_t>(nodes_.size());
   Node node{{round_down(box.min.x), round_down(box.min.y), round_down(box.min.z), round_up(box.max.x),
              round_up(box.max.y), round_up(box.max.z)},
-            0,
             0};
-  const double extent[3] = {centres.max.x - centres.min.x, centres.max.y - centres.min.y,
-                            centres.max.z - centres.min.z};
-  const int axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : extent[1] >= extent[2] ? 1 : 2;
-  if (end - begin <= kLeafSize || extent[axis] == 0) {
-    node.first = static_cast<std::uint32_t>(shapes_.size());
-    node.count = static_cast<std::uint32_t>(end - begin);
-    for (std::size_t i = begin; i < end; ++i) shapes_.push_back(items[i].shape);
+  if (end - begin == 1) {
+    static_assert(alignof(Shape) > 1, "a leaf's link needs its low bit clear");
+    node.link = reinterpret_cast<std::uintptr_t>(items[begin].shape);
     nodes_.push_back(node);
     return index;
   }
+  // Shapes whose centres coincide are split too (split() falls back on the
+  // median): one shape per leaf.
   const std::size_t mid = split(items, begin, end, centres);
   nodes_.push_back(node);
   build(items, begin, mid);  // lands at index + 1
   const std::uint32_t right = build(items, mid, end);
-  nodes_[index].first = right;
+  nodes_[index].link = (static_cast<std::uintptr_t>(right) << 1) | 1;
   return index;
 }
 
@@ -250,11 +245,10 @@ bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, Stop&& st
   std::uint32_t current = 0;
   for (;;) {
     const Node& n = nodes_[current];
-    if (n.count > 0) {
-      for (std::uint32_t i = n.first; i < n.first + n.count; ++i)
-        if (stop(shapes_[i])) return true;
+    if (n.is_leaf()) {
+      if (stop(n.shape())) return true;
     } else {
-      std::uint32_t a = current + 1, b = n.first;
+      std::uint32_t a = current + 1, b = n.second_child();
       double ea, eb;
       const bool hit_a = enters(nodes_[a], r, t_max, ea);
       const bool hit_b = enters(nodes_[b], r, t_max, eb);
@@ -344,7 +338,7 @@ void ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
 }
 
 std::size_t ShapeBvh::bytes() const {
-  return nodes_.capacity() * sizeof(Node) + (shapes_.capacity() + planes_.capacity() + unbounded_.capacity()) * sizeof(const Shape*);
+  return nodes_.capacity() * sizeof(Node) + (planes_.capacity() + unbounded_.capacity()) * sizeof(const Shape*);
 }
 
 }  // namespace toroid

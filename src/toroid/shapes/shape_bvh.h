@@ -54,17 +54,23 @@ class ShapeBvh {
   // container (the book lists them; they cost cover.yml 13% of its time).
   void intersect_up_to_hit(const Ray& ray, Intersections& xs) const;
 
-  // Memory the index holds (nodes and shape lists), for the memory report.
+  // Memory the index holds (nodes and the unbounded shapes' lists), for the
+  // memory report.
   std::size_t bytes() const;
 
  private:
-  // Boxes in float, rounded outwards, so that a node takes 32 bytes.
+  // Boxes in float, rounded outwards, so that a node takes 32 bytes. Every
+  // leaf holds one shape, named by the node itself (no list of shapes
+  // beside the nodes: 64 bytes of index per shape, docs/performance.md).
   struct Node {
     float box[6];  // low x, y, z, then high x, y, z
-    // Leaf (count > 0): shapes_[first .. first + count). Interior (count 0):
-    // children at this node's index + 1 and at `first`.
-    std::uint32_t first;
-    std::uint32_t count;
+    // A leaf: its shape's address. An interior node: 2 * (index of its
+    // second child) + 1; the first child follows the node. Shapes are
+    // aligned, so the low bit tells the two apart.
+    std::uintptr_t link;
+    bool is_leaf() const { return (link & 1) == 0; }
+    const Shape* shape() const { return reinterpret_cast<const Shape*>(link); }
+    std::uint32_t second_child() const { return static_cast<std::uint32_t>(link >> 1); }
   };
   struct Item;
 
@@ -74,7 +80,6 @@ class ShapeBvh {
   bool walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const;
 
   std::vector<Node> nodes_;
-  std::vector<const Shape*> shapes_;     // bounded shapes, in leaf order
   std::vector<const Plane*> planes_;     // unbounded planes, tested by every query
   std::vector<const Shape*> unbounded_;  // other unbounded shapes, likewise
   std::size_t size_ = 0;
