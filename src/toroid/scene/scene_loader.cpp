@@ -23,6 +23,7 @@
 #include "toroid/math/transform.h"
 #include "toroid/render/image_limits.h"
 #include "toroid/render/pattern.h"
+#include "toroid/render/shared_material.h"
 #include "toroid/render/texture_map.h"
 #include "toroid/scene/obj_file.h"
 #include "toroid/scene/yaml_items.h"
@@ -84,7 +85,7 @@ struct MaterialOrder {
                     m.transparency, m.refractive_index, m.pattern);
   }
   static const Material& value(const Material& m) { return m; }
-  static const Material& value(const std::shared_ptr<const Material>& m) { return *m; }
+  static const Material& value(const SharedMaterial& m) { return *m; }
   bool operator()(const auto& a, const auto& b) const { return key(value(a)) < key(value(b)); }
 };
 
@@ -774,7 +775,7 @@ class Loader {
         fail(f.value, "cannot load OBJ file '" + file + "': " + e.what());
       }
     }
-    const std::shared_ptr<const Material> shared = shared_material(material);
+    const SharedMaterial shared = shared_material(material);
     s->set_material(shared);
     if (const Entry* t = find(es, "transform")) s->set_transform(transform_of(t->value));
     // Groups and CSG pass their material to the primitives below them that
@@ -785,7 +786,7 @@ class Loader {
     return s;
   }
 
-  static void apply_material_recursive(Shape& s, const std::shared_ptr<const Material>& m) {
+  static void apply_material_recursive(Shape& s, const SharedMaterial& m) {
     s.set_material(m);
     if (auto* g = dynamic_cast<Group*>(&s))
       for (const auto& c : g->children()) apply_material_recursive(*c, m);
@@ -793,9 +794,9 @@ class Loader {
 
   // Equal materials share one block: a scene may give thousands of shapes
   // the same material (a define), and a shape holds only a pointer to it.
-  std::shared_ptr<const Material> shared_material(const Material& m) const {
+  SharedMaterial shared_material(const Material& m) const {
     auto it = materials_.find(m);
-    if (it == materials_.end()) it = materials_.insert(std::make_shared<const Material>(m)).first;
+    if (it == materials_.end()) it = materials_.insert(SharedMaterial(m)).first;
     return *it;
   }
 
@@ -811,7 +812,7 @@ class Loader {
   mutable std::map<std::string, Matrix4> transform_defines_;
   mutable std::optional<TorusRadii> material_torus_;                      // see MaterialTorus
   mutable std::map<std::string, std::shared_ptr<const Canvas>> images_;  // by canonical path
-  mutable std::set<std::shared_ptr<const Material>, MaterialOrder> materials_;
+  mutable std::set<SharedMaterial, MaterialOrder> materials_;
 };
 
 Scene Loader::load(const YAML::Node& root) {

@@ -6,15 +6,6 @@
 
 namespace toroid {
 
-std::shared_ptr<const Material> Shape::default_material() {
-  // A pointer with no control block (the aliasing constructor): copying it
-  // for every new shape allocates nothing and counts no references.
-  static const Material kDefault;
-  return std::shared_ptr<const Material>(std::shared_ptr<const Material>(), &kDefault);
-}
-
-void Shape::set_material(const Material& m) { material_ = std::make_shared<const Material>(m); }
-
 void Shape::set_transform(const Matrix4& m) {
   inverse_ = Affine::from(inverse(m));
   bounds_changed();

@@ -4,11 +4,13 @@
 
 #include <cstddef>
 #include <memory>
+#include <utility>
 
 #include "toroid/math/affine.h"
 #include "toroid/math/matrix.h"
 #include "toroid/render/intersection.h"
 #include "toroid/render/material.h"
+#include "toroid/render/shared_material.h"
 #include "toroid/render/ray.h"
 #include "toroid/shapes/bounds.h"
 
@@ -22,9 +24,7 @@ class Shape {
   // field fits in the tail padding (a scene may hold many thousands of
   // shapes; see docs/performance.md).
   Affine inverse_;
-  std::shared_ptr<const Material> material_ = default_material();
-
-  static std::shared_ptr<const Material> default_material();
+  SharedMaterial material_;
 
  public:
   Shape() = default;
@@ -41,14 +41,15 @@ class Shape {
   // Precondition: is_invertible(m) and m is affine (bottom row 0 0 0 1).
   void set_transform(const Matrix4& m);
 
-  // The material is held by pointer (16 bytes instead of its 96): shapes
-  // made without one share one process-wide default, and the scene loader
-  // gives shapes with equal materials one block (docs/performance.md).
+  // The material is held by a counted pointer (8 bytes instead of its 96):
+  // shapes made without one share one process-wide default, and the scene
+  // loader gives shapes with equal materials one block (docs/performance.md).
   const Material& material() const { return *material_; }
+  const SharedMaterial& shared_material() const { return material_; }
   // A new block holding a copy of m, this shape's alone.
-  void set_material(const Material& m);
-  // Shares m's block with its other holders. Precondition: m != nullptr.
-  void set_material(std::shared_ptr<const Material> m) { material_ = std::move(m); }
+  void set_material(const Material& m) { material_ = SharedMaterial(m); }
+  // Shares m's block with its other holders.
+  void set_material(SharedMaterial m) { material_ = std::move(m); }
 
   const Shape* parent = nullptr;
   // Shapes with casts_shadow == false are skipped by shadow rays (YAML `shadow: false`).

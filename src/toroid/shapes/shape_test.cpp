@@ -75,7 +75,7 @@ TEST(Shapes, AssigningAMaterialGivesTheShapeItsOwnCopy) {
 TEST(Shapes, SharingAMaterial) {
   Material m;
   m.diffuse = 0.3;
-  const auto shared = std::make_shared<const Material>(m);
+  const SharedMaterial shared(m);
   TestShape a, b;
   a.set_material(shared);
   b.set_material(shared);

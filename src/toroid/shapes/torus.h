@@ -85,7 +85,7 @@ class Torus : public Primitive<Torus> {
   bool keeps_all_ = true;  // whole sweep and whole surface: no root test
   double major_, minor_;
   // The sweep, held apart when it is partial (rare): a whole torus stays at
-  // 160 bytes, 176 with make_shared's control block (docs/performance.md).
+  // 152 bytes, 168 with make_shared's control block (docs/performance.md).
   std::unique_ptr<const TorusSweep> partial_;
   static constexpr TorusSweep kWholeSweep{};
 };

@@ -37,14 +37,16 @@ struct CountingAllocator {
 };
 
 // The shape base: vtable pointer, affine inverse (96), material pointer
-// (16), parent (8) and the shadow flag, whose tail padding holds the torus's
+// (8), parent (8) and the shadow flag, whose tail padding holds the torus's
 // one-byte fields; then the radii and the partial sweep's pointer.
-TEST(TorusFootprint, ObjectFitsIn160Bytes) { EXPECT_LE(sizeof(Torus), 160u); }
+TEST(TorusFootprint, ObjectFitsIn152Bytes) { EXPECT_LE(sizeof(Torus), 152u); }
 
-TEST(TorusFootprint, InstanceWithItsControlBlockFitsIn176Bytes) {
+// make_shared's 16-byte control block with it: 168 bytes asked, which glibc
+// serves from a 176-byte chunk (176 asked would take 192).
+TEST(TorusFootprint, InstanceWithItsControlBlockFitsIn168Bytes) {
   Material glaze;
   glaze.color = Color{0.5, 0.4, 0.3};
-  const auto shared = std::make_shared<const Material>(glaze);  // the loader's, made once per scene
+  const SharedMaterial shared(glaze);  // the loader's, made once per scene
   requested_bytes = 0;
   auto t = std::allocate_shared<Torus>(CountingAllocator<Torus>(), 1.0, 0.25);
   // A transform of its own and a shared material add nothing to the heap.
@@ -52,7 +54,7 @@ TEST(TorusFootprint, InstanceWithItsControlBlockFitsIn176Bytes) {
   t->set_material(shared);
   EXPECT_EQ(&t->material(), shared.get());
   EXPECT_GE(requested_bytes, sizeof(Torus));  // the count sees the object
-  EXPECT_LE(requested_bytes, 176u);
+  EXPECT_LE(requested_bytes, 168u);
 }
 
 TEST(TorusFootprint, PartialTorusKeepsItsSweepApart) {
