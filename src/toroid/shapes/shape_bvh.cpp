@@ -20,8 +20,12 @@ namespace {
 // more than a box test, and the leaf's box is the shape's own (measured with
 // callgrind on the 25-tori scene: leaves of 1, 2 and 4 shapes cost 754, 778
 // and 865 million instructions; scatter2000 +40% with 2).
-// Deeper than any median-split tree over 2^32 shapes.
-constexpr int kStackSize = 64;
+// Above this depth the hierarchy is split by the surface area heuristic,
+// below it at the median: at most 32 + 32 levels for 2^32 shapes, however
+// unevenly the heuristic splits (nested shapes of growing sizes can make it
+// peel them off one at a time), so the walk's stack has a bound.
+constexpr int kAreaSplitDepth = 32;
+constexpr int kStackSize = kAreaSplitDepth + 32;
 
 float round_down(double x) {
   const float f = static_cast<float>(x);
@@ -125,7 +129,7 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shape
   }
   if (items.empty()) return;
   nodes_.reserve(2 * items.size() - 1);
-  build(items, 0, items.size());
+  build(items, 0, items.size(), 0);
   nodes_.shrink_to_fit();
 }
 
@@ -142,15 +146,15 @@ double half_area(const BoundingBox& b) {
 // of the centres on each axis (a ray meets a box about in proportion to its
 // area, so the split minimising area x count on both sides is the one
 // queries cross least); the median on the widest axis when every centre
-// falls in one bin.
-std::size_t ShapeBvh::split(std::vector<Item>& items, std::size_t begin, std::size_t end,
-                            const BoundingBox& centres) {
+// falls in one bin, or when by_area is false.
+std::size_t ShapeBvh::split(std::vector<Item>& items, std::size_t begin, std::size_t end, const BoundingBox& centres,
+                            bool by_area) {
   constexpr int kBins = 16;
   const double lo[3] = {centres.min.x, centres.min.y, centres.min.z};
   const double hi[3] = {centres.max.x, centres.max.y, centres.max.z};
   double best_cost = std::numeric_limits<double>::infinity();
   int best_axis = -1, best_bin = 0;
-  for (int axis = 0; axis < 3; ++axis) {
+  for (int axis = 0; by_area && axis < 3; ++axis) {
     const double extent = hi[axis] - lo[axis];
     if (!(extent > 0)) continue;
     BoundingBox box[kBins];
@@ -201,7 +205,8 @@ std::size_t ShapeBvh::split(std::vector<Item>& items, std::size_t begin, std::si
   return mid;
 }
 
-std::uint32_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std::size_t end) {
+std::uint32_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std::size_t end, int depth) {
+  depth_ = std::max(depth_, depth);
   BoundingBox box, centres;
   for (std::size_t i = begin; i < end; ++i) {
     box.merge(items[i].box);
@@ -219,10 +224,10 @@ std::uint32_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std::
   }
   // Shapes whose centres coincide are split too (split() falls back on the
   // median): one shape per leaf.
-  const std::size_t mid = split(items, begin, end, centres);
+  const std::size_t mid = split(items, begin, end, centres, depth < kAreaSplitDepth);
   nodes_.push_back(node);
-  build(items, begin, mid);  // lands at index + 1
-  const std::uint32_t right = build(items, mid, end);
+  build(items, begin, mid, depth + 1);  // lands at index + 1
+  const std::uint32_t right = build(items, mid, end, depth + 1);
   nodes_[index].link = (static_cast<std::uintptr_t>(right) << 1) | 1;
   return index;
 }

@@ -54,6 +54,10 @@ class ShapeBvh {
   // container (the book lists them; they cost cover.yml 13% of its time).
   void intersect_up_to_hit(const Ray& ray, Intersections& xs) const;
 
+  // Levels of nodes below the root (0 for one shape or none): at most 64,
+  // the bound of the walk's stack.
+  int depth() const { return depth_; }
+
   // Memory the index holds (nodes and the unbounded shapes' lists), for the
   // memory report.
   std::size_t bytes() const;
@@ -74,8 +78,9 @@ class ShapeBvh {
   };
   struct Item;
 
-  std::size_t split(std::vector<Item>& items, std::size_t begin, std::size_t end, const BoundingBox& centres);
-  std::uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end);
+  static std::size_t split(std::vector<Item>& items, std::size_t begin, std::size_t end, const BoundingBox& centres,
+                           bool by_area);
+  std::uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end, int depth);
   template <typename Stop>
   bool walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const;
 
@@ -83,6 +88,7 @@ class ShapeBvh {
   std::vector<const Plane*> planes_;     // unbounded planes, tested by every query
   std::vector<const Shape*> unbounded_;  // other unbounded shapes, likewise
   std::size_t size_ = 0;
+  int depth_ = 0;
   std::uint64_t serial_ = 0;
   bool any_transparent_ = false;
 };

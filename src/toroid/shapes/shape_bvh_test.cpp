@@ -192,5 +192,44 @@ TEST(ShapeBvh, SeesNothingWhenEmpty) {
   EXPECT_EQ(bvh.size(), 0u);
 }
 
+// Spheres each three times the size of the last, side by side: the surface
+// area heuristic alone peels them off nearly one at a time (89 levels for
+// 200 spheres, past the walk's stack of 64); the index keeps within 64
+// levels, and its answers stay exact.
+TEST(ShapeBvh, StaysWithinItsDepthBoundOnShapesOfGrowingSizes) {
+  std::vector<std::shared_ptr<Shape>> spheres;
+  std::vector<std::pair<double, double>> centre_radius;
+  double x = 0;
+  for (int i = 0; i < 200; ++i) {
+    const double radius = std::pow(3.0, i);
+    x += 2.5 * radius;
+    auto s = std::make_shared<Sphere>();
+    s->set_transform(translation(x, 0, 0) * scaling(radius, radius, radius));
+    spheres.push_back(s);
+    centre_radius.emplace_back(x, radius);
+  }
+  const ShapeBvh bvh(spheres);
+  EXPECT_GT(bvh.depth(), 32);  // the heuristic peeled down to where the median takes over
+  EXPECT_LE(bvh.depth(), 64);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> offset(-0.7, 0.7);
+  int hits = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const auto [cx, r] = centre_radius[static_cast<std::size_t>(i) % centre_radius.size()];
+    const Ray ray{point(cx + offset(rng) * r, offset(rng) * r, -10 * r), vector(0, 0, 1)};
+    Intersection expected, got;
+    double t_max = kInf;
+    bool found = false;
+    for (const auto& s : spheres)
+      if (s->intersect_nearest(ray, t_max, expected)) t_max = expected.t, found = true;
+    ASSERT_EQ(bvh.intersect_nearest(ray, kInf, got), found);
+    if (!found) continue;
+    ++hits;
+    EXPECT_EQ(got.t, expected.t);
+    EXPECT_EQ(got.object, expected.object);
+  }
+  EXPECT_GT(hits, 1000);
+}
+
 }  // namespace
 }  // namespace toroid
