@@ -44,13 +44,18 @@ double max_abs(const Tuple& v) { return std::max({std::abs(v.x), std::abs(v.y), 
 double world_half_thickness(const Shape& shape) {
   const double half = shape.half_thickness();
   if (half == 0) return 0;
+  const auto frobenius = [](const auto& m) {
+    double norm2 = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) norm2 += m[i][j] * m[i][j];
+    return std::sqrt(norm2);
+  };
+  // Asked at every hit: a shape at the top level reads its own inverse.
+  if (shape.parent == nullptr) return half / frobenius(shape.inverse_affine().m);
   Matrix4 world_to_object = shape.inverse_transform();
   for (const Shape* s = shape.parent; s != nullptr; s = s->parent)
     world_to_object = world_to_object * s->inverse_transform();
-  double norm2 = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) norm2 += world_to_object(i, j) * world_to_object(i, j);
-  return half / std::sqrt(norm2);
+  return half / frobenius(world_to_object.m);
 }
 
 Computations prepare(const Intersection& hit, const Ray& ray, std::span<const Intersection> xs) {

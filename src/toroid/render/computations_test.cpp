@@ -8,6 +8,7 @@
 
 #include "support/approx.h"
 #include "toroid/math/transform.h"
+#include "toroid/shapes/cube.h"
 #include "toroid/shapes/group.h"
 #include "toroid/shapes/plane.h"
 #include "toroid/shapes/sphere.h"
@@ -189,6 +190,29 @@ TEST(SurfaceBias, ExceedsTheRoundingOfFarCoordinates) {
   EXPECT_LT(b, 0.01);
   // ... and near the origin it is far below anything visible.
   EXPECT_LT(bias_from_above(Plane(), 0, 1), 1e-12);
+}
+
+// A top-level shape reads its own inverse; below a group the world-to-object
+// matrix is the product. An identity group changes nothing, bit for bit.
+TEST(SurfaceBias, IsTheSameAtTheTopLevelAndBelowAnIdentityGroup) {
+  for (const Matrix4& m : {scaling(2, 0.5, 3), rotation_x(0.7) * shearing(0.2, 0, 0.1, 0, 0, 0.3), translation(1, 2, 3)}) {
+    Sphere alone;
+    alone.set_transform(m);
+    auto group = std::make_shared<Group>();
+    auto child = std::make_shared<Sphere>();
+    child->set_transform(m);
+    group->add_child(child);
+    EXPECT_EQ(bias_from_above(alone, 1, 1), bias_from_above(*child, 1, 1));
+  }
+}
+
+// Spheres and cubes answer half_thickness without building their box: the
+// same as the box gives.
+TEST(SurfaceBias, SpheresAndCubesKnowTheirHalfThicknessAsTheirBoxSays) {
+  const Sphere sphere;
+  const Cube cube;
+  EXPECT_EQ(sphere.half_thickness(), sphere.Shape::half_thickness());
+  EXPECT_EQ(cube.half_thickness(), cube.Shape::half_thickness());
 }
 
 }  // namespace
