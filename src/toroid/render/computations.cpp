@@ -58,7 +58,8 @@ double world_half_thickness(const Shape& shape) {
   return half / frobenius(world_to_object.m);
 }
 
-Computations prepare(const Intersection& hit, const Ray& ray, std::span<const Intersection> xs) {
+// Everything but n1 and n2.
+Computations prepare(const Intersection& hit, const Ray& ray) {
   Computations comps;
   comps.t = hit.t;
   comps.object = hit.object;
@@ -73,7 +74,6 @@ Computations prepare(const Intersection& hit, const Ray& ray, std::span<const In
   const double bias = surface_bias(hit, ray);
   comps.over_point = comps.point + comps.normalv * bias;
   comps.under_point = comps.point - comps.normalv * bias;
-  refractive_indices(hit, xs, comps);
   return comps;
 }
 
@@ -85,11 +85,17 @@ double surface_bias(const Intersection& hit, const Ray& ray) {
 }
 
 Computations prepare_computations(const Intersection& hit, const Ray& ray, const Intersections& xs) {
-  return prepare(hit, ray, xs);
+  Computations comps = prepare(hit, ray);
+  refractive_indices(hit, xs, comps);
+  return comps;
 }
 
 Computations prepare_computations(const Intersection& hit, const Ray& ray) {
-  return prepare(hit, ray, std::span<const Intersection>(&hit, 1));
+  Computations comps = prepare(hit, ray);
+  // The containers of the list {hit}: none before it, its object after.
+  comps.n1 = 1.0;
+  comps.n2 = hit.object->material().refractive_index;
+  return comps;
 }
 
 double schlick(const Computations& comps) {

@@ -14,10 +14,10 @@ Color effective_color(const Material& m, const Shape& object, const Tuple& point
   return surface * intensity;
 }
 
-// Diffuse plus specular light from a light of `intensity` at `position`.
-Color diffuse_specular(const Material& m, const Color& effective, const Color& intensity, const Tuple& position,
-                       const Tuple& point, const Tuple& eyev, const Tuple& normalv) {
-  const Tuple lightv = normalize(position - point);
+// Diffuse plus specular light from a light of `intensity` in the unit
+// direction `lightv` (from the point towards the light).
+Color diffuse_specular(const Material& m, const Color& effective, const Color& intensity, const Tuple& lightv,
+                       const Tuple& eyev, const Tuple& normalv) {
   const double light_dot_normal = dot(lightv, normalv);
   // Light on the other side of the surface: none.
   if (light_dot_normal < 0) return kBlack;
@@ -34,11 +34,15 @@ Color diffuse_specular(const Material& m, const Color& effective, const Color& i
 
 Color lighting(const Material& m, const Shape& object, const PointLight& light, const Tuple& point,
                const Tuple& eyev, const Tuple& normalv, double light_intensity) {
+  return lighting_towards(m, object, light, point, normalize(light.position - point), eyev, normalv, light_intensity);
+}
+
+Color lighting_towards(const Material& m, const Shape& object, const PointLight& light, const Tuple& point,
+                       const Tuple& lightv, const Tuple& eyev, const Tuple& normalv, double light_intensity) {
   const Color effective = effective_color(m, object, point, light.intensity);
   const Color ambient = effective * m.ambient;
   if (light_intensity <= 0) return ambient;
-  return ambient +
-         diffuse_specular(m, effective, light.intensity, light.position, point, eyev, normalv) * light_intensity;
+  return ambient + diffuse_specular(m, effective, light.intensity, lightv, eyev, normalv) * light_intensity;
 }
 
 Color lighting(const Material& m, const Shape& object, const AreaLight& light, const Tuple& point,
@@ -50,7 +54,7 @@ Color lighting(const Material& m, const Shape& object, const AreaLight& light, c
   const std::uint64_t key = light.jitter_key(point);
   for (int v = 0; v < light.vsteps; ++v)
     for (int u = 0; u < light.usteps; ++u)
-      sum += diffuse_specular(m, effective, light.intensity, light.sample(key, u, v), point, eyev, normalv);
+      sum += diffuse_specular(m, effective, light.intensity, normalize(light.sample(key, u, v) - point), eyev, normalv);
   return ambient + sum * (light_intensity / light.samples);
 }
 

@@ -19,6 +19,12 @@ class Shape;
 Color lighting(const Material& material, const Shape& object, const PointLight& light, const Tuple& point,
                const Tuple& eyev, const Tuple& normalv, double light_intensity);
 
+// The same, given lightv = normalize(light.position - point), which a caller
+// that has computed it already (shade_hit, to skip the shadow ray of a light
+// behind the surface) need not have computed twice.
+Color lighting_towards(const Material& material, const Shape& object, const PointLight& light, const Tuple& point,
+                       const Tuple& lightv, const Tuple& eyev, const Tuple& normalv, double light_intensity);
+
 // The book's form: in_shadow == true means no light reaches the point.
 inline Color lighting(const Material& material, const Shape& object, const PointLight& light, const Tuple& point,
                       const Tuple& eyev, const Tuple& normalv, bool in_shadow = false) {

@@ -1,6 +1,7 @@
 #include "toroid/render/pattern.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include "toroid/shapes/shape.h"
 
@@ -21,7 +22,14 @@ namespace {
 // surface point (about 1e-16 relative to the scene's coordinates).
 constexpr double kPatternEpsilon = 1e-9;
 
-bool is_even(double floored) { return std::fmod(floored, 2.0) == 0.0; }
+// Whether a whole number (a floor) is even. Below 2^52 in size the integer
+// test gives fmod's answer without its cost (a tenth of a striped wall's
+// shading); beyond, every double is even and fmod says so (and that
+// infinities and NaN are not).
+bool is_even(double floored) {
+  if (std::abs(floored) < 0x1p52) return (static_cast<std::int64_t>(floored) & 1) == 0;
+  return std::fmod(floored, 2.0) == 0.0;
+}
 
 }  // namespace
 

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 
@@ -147,6 +149,21 @@ TEST(Patterns, CheckersShouldRepeatInZ) {
 }
 
 // Beyond the book.
+
+TEST(PatternsExtra, StripesAlternateFarFromTheOriginAndBeyondWholeNumbers) {
+  // Whole numbers below 2^52 are told even or odd by an integer test, larger
+  // ones by fmod: both must agree with fmod(floor(x), 2) == 0.
+  const StripePattern pattern(white, black);
+  for (const double x : {0x1p52 - 1, 0x1p52 - 2, -0x1p40 - 1, -0x1p40 - 2, 0x1p51 + 3, -3.5, -4.5}) {
+    const bool even = std::fmod(std::floor(x), 2.0) == 0.0;
+    EXPECT_APPROX(pattern.pattern_at(point(x, 0, 0)), even ? white : black) << "x = " << x;
+  }
+  EXPECT_APPROX(pattern.pattern_at(point(0x1p52 - 1, 0, 0)), black);
+  EXPECT_APPROX(pattern.pattern_at(point(0x1p60, 0, 0)), white);  // every double this large is even
+  EXPECT_APPROX(pattern.pattern_at(point(-0x1p60, 0, 0)), white);
+  EXPECT_APPROX(pattern.pattern_at(point(std::numeric_limits<double>::infinity(), 0, 0)), black);
+  EXPECT_APPROX(pattern.pattern_at(point(std::nan(""), 0, 0)), black);
+}
 
 TEST(PatternsExtra, CheckersDoNotSpeckleOnAPlaneAtYZero) {
   // Points on y = 0 carry rounding noise of either sign; all must be white.

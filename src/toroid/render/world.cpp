@@ -1,6 +1,7 @@
 #include "toroid/render/world.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "toroid/math/transform.h"
@@ -66,14 +67,29 @@ bool is_shadowed(const World& world, const Tuple& light_position, const Tuple& p
   const double distance = magnitude(to_light);
   const Ray ray{point, to_light / distance};
   // Any blocker between the point and the light will do. Neighbouring shadow
-  // rays tend to be blocked by the same object (POV-Ray's shadow cache): try
-  // this thread's last blocker first. The answer is the same either way.
+  // rays towards one light tend to be blocked by the same object (POV-Ray's
+  // shadow cache): try the last blocker of this thread's rays towards this
+  // light first, and forget it once it misses (a stale blocker costs a test
+  // on every ray). Lights are told apart by the position's address, in a few
+  // slots; the answer is the same whatever the cache holds.
   if (indexed(world)) {
+    struct Slot {
+      const Tuple* light = nullptr;
+      const Shape* blocker = nullptr;
+    };
     thread_local std::uint64_t cached_index = 0;
-    thread_local const Shape* last_blocker = nullptr;
-    if (cached_index != world.index.serial()) cached_index = world.index.serial(), last_blocker = nullptr;
-    if (last_blocker && last_blocker->blocks(ray, distance)) return true;
-    return world.index.blocks(ray, distance, &last_blocker);
+    thread_local Slot slots[4];
+    if (cached_index != world.index.serial()) {
+      cached_index = world.index.serial();
+      for (Slot& slot : slots) slot = {};
+    }
+    Slot& slot = slots[(reinterpret_cast<std::uintptr_t>(&light_position) * 0x9E3779B97F4A7C15u) >> 62];
+    if (slot.light != &light_position) slot = {&light_position, nullptr};
+    if (slot.blocker) {
+      if (slot.blocker->blocks(ray, distance)) return true;
+      slot.blocker = nullptr;
+    }
+    return world.index.blocks(ray, distance, &slot.blocker);
   }
   for (const auto& object : world.objects)
     if (object->blocks(ray, distance)) return true;
@@ -98,10 +114,12 @@ Color shade_hit(const World& world, const Computations& comps, int remaining) {
   Color surface = kBlack;
   for (const PointLight& light : world.lights) {
     // A light behind the surface lights nothing, shadowed or not (lighting's
-    // own test, computed alike): spare its shadow ray.
-    const bool faces_light = dot(normalize(light.position - comps.over_point), comps.normalv) >= 0;
+    // own test, on the same vector): spare its shadow ray.
+    const Tuple lightv = normalize(light.position - comps.over_point);
+    const bool faces_light = dot(lightv, comps.normalv) >= 0;
     const bool shadowed = faces_light && is_shadowed(world, comps.over_point, light);
-    surface += lighting(m, *comps.object, light, comps.over_point, comps.eyev, comps.normalv, shadowed);
+    surface += lighting_towards(m, *comps.object, light, comps.over_point, lightv, comps.eyev, comps.normalv,
+                                shadowed ? 0.0 : 1.0);
   }
   for (const AreaLight& light : world.area_lights) {
     // A light wholly behind the surface lights nothing: spare its shadow rays.
@@ -135,11 +153,13 @@ Color color_at(const World& world, const Ray& ray, int remaining) {
   // prepare_computations before shade_hit can cast (and so overwrite them
   // with) the next ray.
   thread_local Intersections xs;
-  if (indexed(world))
-    world.index.intersect_up_to_hit(ray, xs);
-  else
+  const Intersection* h = nullptr;
+  if (indexed(world)) {
+    h = world.index.intersect_up_to_hit(ray, xs);
+  } else {
     intersect_world(world, ray, xs);
-  const Intersection* h = hit(xs);
+    h = hit(xs);
+  }
   if (h == nullptr) return kBlack;
   // Only a refracting hit reads n1 and n2 (refracted_color, schlick): the
   // list is sorted, and the containers walked, for those alone.

@@ -14,6 +14,9 @@ class Plane : public Primitive<Plane> {
     return {point(-BoundingBox::kInf, 0, -BoundingBox::kInf), point(BoundingBox::kInf, 0, BoundingBox::kInf)};
   }
   int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
+  // No finite, non-zero side (Shape::half_thickness's answer, without
+  // building the box at every hit).
+  double half_thickness() const override { return 0; }
 
   // Where a ray meets y = 0, given only the y of its object-space origin and
   // direction. Parallel or coplanar rays miss (a coplanar ray would see only

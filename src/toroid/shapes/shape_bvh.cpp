@@ -319,7 +319,7 @@ bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const
   return walk(ray, 0, t_max, blocked_by);
 }
 
-void ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
+const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
   xs.clear();
   double t_hit = BoundingBox::kInf;
   auto add_shape = [&](const Shape* s) {
@@ -338,8 +338,18 @@ void ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
   for (const Shape* s : unbounded_) add_shape(s);
   walk(ray, 0, t_hit, add_shape);
   // What lies beyond the hit is never read (a room's walls put six
-  // intersections on every line).
-  std::erase_if(xs, [t_hit](const Intersection& x) { return x.t > t_hit; });
+  // intersections on every line): keep the rest, in order, and find the
+  // hit among them as hit() would (the first of the least t >= 0).
+  std::size_t kept = 0, found = xs.size();
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    if (xs[i].t > t_hit) continue;
+    xs[kept] = xs[i];
+    if (xs[kept].t >= 0 && (found == xs.size() || xs[kept].t < xs[found].t)) found = kept;
+    ++kept;
+  }
+  const bool any = found < xs.size();
+  xs.resize(kept);
+  return any ? &xs[found] : nullptr;
 }
 
 std::size_t ShapeBvh::bytes() const {

@@ -52,7 +52,9 @@ class ShapeBvh {
   // (prepare_computations) reads. Shapes wholly behind the origin are left
   // out: a closed surface there is entered and left, and changes no
   // container (the book lists them; they cost cover.yml 13% of its time).
-  void intersect_up_to_hit(const Ray& ray, Intersections& xs) const;
+  // Returns the hit in xs, the one hit(xs) names, or nullptr when there is
+  // none.
+  const Intersection* intersect_up_to_hit(const Ray& ray, Intersections& xs) const;
 
   // Levels of nodes below the root (0 for one shape or none): at most 64,
   // the bound of the walk's stack.

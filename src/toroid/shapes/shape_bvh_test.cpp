@@ -115,8 +115,9 @@ TEST(ShapeBvh, ListUpToTheHitHoldsEveryIntersectionBeforeItOfShapesNotBehind) {
   int left_out = 0;
   for (const Ray& ray : random_rays(2000)) {
     const Intersections all = line_intersections(shapes, ray);
-    bvh.intersect_up_to_hit(ray, got);
-    sort_intersections(got);  // the index lists them in no particular order
+    const Intersection* returned = bvh.intersect_up_to_hit(ray, got);
+    ASSERT_EQ(returned, hit(got));  // the hit it names is hit()'s, in its own list
+    sort_intersections(got);        // the index lists them in no particular order
     const Intersection* h = hit(all);
     const double t_hit = h ? h->t : kInf;
     // Every intersection up to the hit (negative t included), in order,
