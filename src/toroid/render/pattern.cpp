@@ -9,7 +9,7 @@ namespace toroid {
 
 void Pattern::set_transform(const Matrix4& m) {
   transform_ = m;
-  inverse_ = inverse(m);
+  inverse_ = Affine::from(inverse(m));
 }
 
 Color Pattern::pattern_at_shape(const Shape& shape, const Tuple& world_point) const {

@@ -5,6 +5,7 @@
 #include <memory>
 #include <utility>
 
+#include "toroid/math/affine.h"
 #include "toroid/math/color.h"
 #include "toroid/math/matrix.h"
 
@@ -18,8 +19,10 @@ class Pattern {
   virtual ~Pattern() = default;
 
   const Matrix4& transform() const { return transform_; }
-  const Matrix4& inverse_transform() const { return inverse_; }
-  // Precondition: is_invertible(m). Caches the inverse.
+  Matrix4 inverse_transform() const { return inverse_.to_matrix(); }
+  // Precondition: is_invertible(m) and m is affine (bottom row 0 0 0 1), as
+  // for a shape. Caches the inverse, in affine form (bit-identical products,
+  // fewer of them: every shaded point of a patterned surface asks).
   void set_transform(const Matrix4& m);
 
   // The colour at a point already in this pattern's space.
@@ -36,7 +39,7 @@ class Pattern {
 
  private:
   Matrix4 transform_ = Matrix4::identity();
-  Matrix4 inverse_ = Matrix4::identity();
+  Affine inverse_;
 };
 
 // floor() that treats values within a hair below an integer as that integer,

@@ -7,6 +7,10 @@
 #include <limits>
 #include <utility>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "toroid/shapes/bounds.h"
 #include "toroid/shapes/csg.h"
 #include "toroid/shapes/group.h"
@@ -104,6 +108,33 @@ bool enters(const Node& n, const SlabRay& r, double t_max, double& entry) {
   if (!(tmin <= tmax)) return false;
   entry = tmin;
   return true;
+}
+
+// enters() for two nodes at once, one in each lane of an SSE2 register (every
+// x86-64 has it): the same operations in the same order, so the same answers
+// bit for bit, in fewer instructions (a walk tests both children of a node).
+// MAXPD and MINPD are the scalar code's `t0 > tmin ? t0 : tmin` and
+// `t1 < tmax ? t1 : tmax`, NaN included: they return the second operand
+// when a comparison fails.
+template <typename Node>
+void enters_both(const Node& a, const Node& b, const SlabRay& r, double t_max, bool met[2], double entry[2]) {
+#if defined(__SSE2__)
+  __m128d tmin = _mm_set1_pd(r.t_min), tmax = _mm_set1_pd(t_max);
+  for (int axis = 0; axis < 3; ++axis) {
+    const __m128d origin = _mm_set1_pd(r.origin[axis]), inv = _mm_set1_pd(r.inv[axis]);
+    const __m128d near = _mm_set_pd(b.box[r.near[axis]], a.box[r.near[axis]]);
+    const __m128d far = _mm_set_pd(b.box[r.far[axis]], a.box[r.far[axis]]);
+    tmin = _mm_max_pd(_mm_mul_pd(_mm_sub_pd(near, origin), inv), tmin);
+    tmax = _mm_min_pd(_mm_mul_pd(_mm_sub_pd(far, origin), inv), tmax);
+  }
+  const int le = _mm_movemask_pd(_mm_cmple_pd(tmin, tmax));
+  met[0] = (le & 1) != 0;
+  met[1] = (le & 2) != 0;
+  _mm_storeu_pd(entry, tmin);
+#else
+  met[0] = enters(a, r, t_max, entry[0]);
+  met[1] = enters(b, r, t_max, entry[1]);
+#endif
 }
 
 }  // namespace
@@ -254,9 +285,11 @@ bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, Stop&& st
       if (stop(n.shape())) return true;
     } else {
       std::uint32_t a = current + 1, b = n.second_child();
-      double ea, eb;
-      const bool hit_a = enters(nodes_[a], r, t_max, ea);
-      const bool hit_b = enters(nodes_[b], r, t_max, eb);
+      bool met[2];
+      double entry2[2];
+      enters_both(nodes_[a], nodes_[b], r, t_max, met, entry2);
+      const bool hit_a = met[0], hit_b = met[1];
+      double ea = entry2[0], eb = entry2[1];
       if (hit_a && hit_b) {
         if (eb < ea) {
           std::swap(a, b);

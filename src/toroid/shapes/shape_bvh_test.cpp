@@ -95,6 +95,43 @@ TEST(ShapeBvh, NearestHitIsTheOneEveryShapeGives) {
   EXPECT_GT(hits, 1000);  // the rays do exercise the hierarchy
 }
 
+TEST(ShapeBvh, AxisParallelRaysAlongBoxFacesFindWhatEveryShapeGives) {
+  // A grid of unit spheres (boxes from whole numbers to whole numbers, exact
+  // in float): rays parallel to two axes, their origins on box faces and
+  // edges, so that a slab test meets 0 * infinity (NaN), which must leave the
+  // interval as it was, in both lanes of the two-child test as in the
+  // one-box test.
+  std::vector<std::shared_ptr<Shape>> shapes;
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 4; ++y) {
+      auto s = std::make_shared<Sphere>();
+      s->set_transform(translation(3.0 * x, 3.0 * y, 0));
+      shapes.push_back(s);
+    }
+  const ShapeBvh bvh(shapes);
+  int hits = 0;
+  for (double along : {-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0})
+    for (double across : {-1.0, 0.0, 1.0, 2.0, 3.0}) {
+      for (const Ray& ray : {Ray{point(-5, along, across), vector(1, 0, 0)}, Ray{point(along, 20, across), vector(0, -1, 0)},
+                             Ray{point(along, across, -5), vector(0, 0, 1)}, Ray{point(along, across, 5), vector(0, 0, -1)}}) {
+        Intersection expected, got;
+        bool found = false;
+        double t_max = kInf;
+        for (const auto& s : shapes)
+          if (s->intersect_nearest(ray, t_max, expected)) {
+            found = true;
+            t_max = expected.t;
+          }
+        ASSERT_EQ(bvh.intersect_nearest(ray, kInf, got), found) << ray.origin << " " << ray.direction;
+        if (!found) continue;
+        ++hits;
+        EXPECT_EQ(got.t, expected.t);
+        EXPECT_EQ(got.object, expected.object);
+      }
+    }
+  EXPECT_GT(hits, 20);
+}
+
 TEST(ShapeBvh, BlocksWhenSomeShadowCasterLiesBeforeTMax) {
   const auto shapes = scattered_shapes();
   const ShapeBvh bvh(shapes);
