@@ -63,14 +63,6 @@ struct SlabRay {
         t_min(from) {}
 };
 
-// Plane::find_hits for a ray in the plane's parent space, computing only the
-// y of the ray's origin and direction in object space (bit for bit what the
-// whole transform would give).
-bool plane_hit(const Plane& p, const Ray& ray, double& t) {
-  const Affine& a = p.inverse_affine();
-  return Plane::hit_at(a.row(1, ray.origin), a.row(1, ray.direction), t);
-}
-
 // Whether `s` or a shape below it refracts.
 bool has_transparent(const Shape& s) {
   if (s.material().transparency > 0) return true;
@@ -150,7 +142,7 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shape
     if (b.empty()) continue;  // nothing to hit (an empty group)
     if (!is_bounded(b)) {
       if (const auto* p = dynamic_cast<const Plane*>(s.get()))
-        planes_.push_back(p);
+        add_plane(*p);
       else
         unbounded_.push_back(s.get());
       continue;
@@ -234,6 +226,70 @@ std::size_t ShapeBvh::split(std::vector<Item>& items, std::size_t begin, std::si
                    items.begin() + static_cast<std::ptrdiff_t>(end),
                    [axis](const Item& a, const Item& b) { return a.centre[axis] < b.centre[axis]; });
   return mid;
+}
+
+void ShapeBvh::add_plane(const Plane& p) {
+  if (odd_plane_ == nullptr) {
+    odd_plane_ = &p;
+    return;
+  }
+  PlanePair pair;
+  for (int j = 0; j < 4; ++j) {
+    pair.row[j][0] = odd_plane_->inverse_affine().m[1][j];
+    pair.row[j][1] = p.inverse_affine().m[1][j];
+  }
+  pair.plane[0] = odd_plane_;
+  pair.plane[1] = &p;
+  planes_.push_back(pair);
+  odd_plane_ = nullptr;
+}
+
+// Plane::find_hits for a ray in the planes' parent space, two planes at a
+// time: the object-space y of the ray's origin and direction summed as
+// Affine::row sums them (bit for bit what the whole transform gives), then
+// Plane::hit_at. With SSE2 (every x86-64) both lanes in one register: the
+// same operations, so the same t, with one division for two planes.
+template <typename Visit>
+bool ShapeBvh::visit_planes(const Ray& ray, Visit&& visit) const {
+  const Tuple& o = ray.origin;
+  const Tuple& d = ray.direction;
+#if defined(__SSE2__)
+  const __m128d ox = _mm_set1_pd(o.x), oy = _mm_set1_pd(o.y), oz = _mm_set1_pd(o.z), ow = _mm_set1_pd(o.w);
+  const __m128d dx = _mm_set1_pd(d.x), dy = _mm_set1_pd(d.y), dz = _mm_set1_pd(d.z), dw = _mm_set1_pd(d.w);
+  const __m128d sign = _mm_set1_pd(-0.0);
+#endif
+  for (const PlanePair& pair : planes_) {
+    double t[2];
+    bool met[2];
+#if defined(__SSE2__)
+    const __m128d r0 = _mm_load_pd(pair.row[0]), r1 = _mm_load_pd(pair.row[1]), r2 = _mm_load_pd(pair.row[2]),
+                  r3 = _mm_load_pd(pair.row[3]);
+    const auto height = [&](__m128d x, __m128d y, __m128d z, __m128d w) {
+      return _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_mul_pd(r0, x), _mm_mul_pd(r1, y)), _mm_mul_pd(r2, z)),
+                        _mm_mul_pd(r3, w));
+    };
+    const __m128d origin_y = height(ox, oy, oz, ow), direction_y = height(dx, dy, dz, dw);
+    // Plane::hit_at: parallel (|direction_y| < kEpsilon) misses, else
+    // t = -origin_y / direction_y.
+    const int parallel = _mm_movemask_pd(_mm_cmplt_pd(_mm_andnot_pd(sign, direction_y), _mm_set1_pd(kEpsilon)));
+    _mm_storeu_pd(t, _mm_div_pd(_mm_xor_pd(origin_y, sign), direction_y));
+    met[0] = (parallel & 1) == 0;
+    met[1] = (parallel & 2) == 0;
+#else
+    for (int i = 0; i < 2; ++i) {
+      const auto height = [&](const Tuple& v) {
+        return pair.row[0][i] * v.x + pair.row[1][i] * v.y + pair.row[2][i] * v.z + pair.row[3][i] * v.w;
+      };
+      met[i] = Plane::hit_at(height(o), height(d), t[i]);
+    }
+#endif
+    for (int i = 0; i < 2; ++i)
+      if (met[i] && visit(t[i], pair.plane[i])) return true;
+  }
+  if (odd_plane_ == nullptr) return false;
+  const Affine& a = odd_plane_->inverse_affine();
+  double t;
+  return Plane::hit_at(a.row(1, o), a.row(1, d), t) && visit(t, odd_plane_);
 }
 
 std::uint32_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std::size_t end, int depth) {
@@ -321,14 +377,14 @@ bool ShapeBvh::intersect_nearest(const Ray& ray, double t_max, Intersection& hit
     }
     return false;  // look on: a nearer hit may follow
   };
-  for (const Plane* p : planes_) {
-    double t;
-    if (plane_hit(*p, ray, t) && t >= 0 && t < t_max) {
+  visit_planes(ray, [&](double t, const Plane* p) {
+    if (t >= 0 && t < t_max) {
       hit = {t, p};
       t_max = t;
       found = true;
     }
-  }
+    return false;
+  });
   for (const Shape* s : unbounded_) try_shape(s);
   walk(ray, 0, t_max, try_shape);
   return found;
@@ -340,13 +396,12 @@ bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const
     if (blocker) *blocker = s;
     return true;
   };
-  for (const Plane* p : planes_) {
-    double t;
-    if (p->casts_shadow && plane_hit(*p, ray, t) && t >= 0 && t < t_max) {
-      if (blocker) *blocker = p;
-      return true;
-    }
-  }
+  const bool plane_blocks = visit_planes(ray, [&](double t, const Plane* p) {
+    if (!(p->casts_shadow && t >= 0 && t < t_max)) return false;
+    if (blocker) *blocker = p;
+    return true;
+  });
+  if (plane_blocks) return true;
   for (const Shape* s : unbounded_)
     if (blocked_by(s)) return true;
   return walk(ray, 0, t_max, blocked_by);
@@ -362,12 +417,11 @@ const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections&
       if (xs[i].t >= 0 && xs[i].t < t_hit) t_hit = xs[i].t;
     return false;
   };
-  for (const Plane* p : planes_) {
-    double t;
-    if (!plane_hit(*p, ray, t)) continue;
+  visit_planes(ray, [&](double t, const Plane* p) {
     xs.push_back({t, p});
     if (t >= 0 && t < t_hit) t_hit = t;
-  }
+    return false;
+  });
   for (const Shape* s : unbounded_) add_shape(s);
   walk(ray, 0, t_hit, add_shape);
   // What lies beyond the hit is never read (a room's walls put six
@@ -386,7 +440,7 @@ const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections&
 }
 
 std::size_t ShapeBvh::bytes() const {
-  return nodes_.capacity() * sizeof(Node) + (planes_.capacity() + unbounded_.capacity()) * sizeof(const Shape*);
+  return nodes_.capacity() * sizeof(Node) + planes_.capacity() * sizeof(PlanePair) + unbounded_.capacity() * sizeof(const Shape*);
 }
 
 }  // namespace toroid

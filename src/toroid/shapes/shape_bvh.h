@@ -86,8 +86,23 @@ class ShapeBvh {
   template <typename Stop>
   bool walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const;
 
+  // Unbounded planes, two at a time, by the one row of each one's inverse
+  // transform that gives a point's object-space height (copied here: every
+  // query tests every plane and reads nothing else of it). An odd plane out
+  // is tested alone, last (the order decides ties).
+  struct PlanePair {
+    alignas(16) double row[4][2];  // row[j][lane]: column j of the inverse's y row
+    const Plane* plane[2];
+  };
+  void add_plane(const Plane& p);
+  // Calls visit(t, plane) for every plane the ray's line meets, in the
+  // order they were indexed, until it returns true (then so does this).
+  template <typename Visit>
+  bool visit_planes(const Ray& ray, Visit&& visit) const;
+
   std::vector<Node> nodes_;
-  std::vector<const Plane*> planes_;     // unbounded planes, tested by every query
+  std::vector<PlanePair> planes_;        // unbounded planes, tested by every query
+  const Plane* odd_plane_ = nullptr;     // the last of an odd number of them
   std::vector<const Shape*> unbounded_;  // other unbounded shapes, likewise
   std::size_t size_ = 0;
   int depth_ = 0;
