@@ -179,9 +179,11 @@ Color color_at(const World& world, const Ray& ray, int remaining) {
   }
   if (h == nullptr) return kBlack;
   // Only a refracting hit reads n1 and n2 (refracted_color, schlick): the
-  // list is sorted, and the containers walked, for those alone.
+  // list is cut at the hit, sorted, and the containers walked, for those
+  // alone.
   if (h->object->material().transparency == 0) return shade_hit(world, prepare_computations(*h, ray), remaining);
   const Intersection found = *h;
+  std::erase_if(xs, [&found](const Intersection& x) { return x.t > found.t; });
   sort_intersections(xs);
   return shade_hit(world, prepare_computations(found, ray, xs), remaining);
 }

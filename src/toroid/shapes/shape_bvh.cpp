@@ -397,7 +397,7 @@ bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const
     return true;
   };
   const bool plane_blocks = visit_planes(ray, [&](double t, const Plane* p) {
-    if (!(p->casts_shadow && t >= 0 && t < t_max)) return false;
+    if (!(t >= 0 && t < t_max && p->casts_shadow)) return false;
     if (blocker) *blocker = p;
     return true;
   });
@@ -409,34 +409,29 @@ bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const
 
 const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
   xs.clear();
+  // The hit as hit() would pick it from the list: the first of the least
+  // t >= 0, found as the list grows.
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::size_t found = kNone;
   double t_hit = BoundingBox::kInf;
+  const auto consider = [&](std::size_t i) {
+    const double t = xs[i].t;
+    if (t >= 0 && (found == kNone || t < t_hit)) found = i, t_hit = t;
+  };
   auto add_shape = [&](const Shape* s) {
     const std::size_t first = xs.size();
     s->intersect(ray, xs);
-    for (std::size_t i = first; i < xs.size(); ++i)
-      if (xs[i].t >= 0 && xs[i].t < t_hit) t_hit = xs[i].t;
+    for (std::size_t i = first; i < xs.size(); ++i) consider(i);
     return false;
   };
   visit_planes(ray, [&](double t, const Plane* p) {
     xs.push_back({t, p});
-    if (t >= 0 && t < t_hit) t_hit = t;
+    consider(xs.size() - 1);
     return false;
   });
   for (const Shape* s : unbounded_) add_shape(s);
   walk(ray, 0, t_hit, add_shape);
-  // What lies beyond the hit is never read (a room's walls put six
-  // intersections on every line): keep the rest, in order, and find the
-  // hit among them as hit() would (the first of the least t >= 0).
-  std::size_t kept = 0, found = xs.size();
-  for (std::size_t i = 0; i < xs.size(); ++i) {
-    if (xs[i].t > t_hit) continue;
-    xs[kept] = xs[i];
-    if (xs[kept].t >= 0 && (found == xs.size() || xs[kept].t < xs[found].t)) found = kept;
-    ++kept;
-  }
-  const bool any = found < xs.size();
-  xs.resize(kept);
-  return any ? &xs[found] : nullptr;
+  return found == kNone ? nullptr : &xs[found];
 }
 
 std::size_t ShapeBvh::bytes() const {

@@ -45,13 +45,15 @@ class ShapeBvh {
   // Whether some indexed shape, or a shape below one, is transparent (has
   // refraction): then shading needs intersect_up_to_hit.
   bool any_transparent() const { return any_transparent_; }
-  // Replaces xs with the intersections up to the nearest hit (t >= 0), in
-  // no particular order (sort_intersections them for the containers), of
-  // the shapes whose box the ray meets (t >= 0) before the hit: every intersection up to the hit of the shapes around and ahead
-  // of the origin, negative t included, which is what the containers algorithm
-  // (prepare_computations) reads. Shapes wholly behind the origin are left
-  // out: a closed surface there is entered and left, and changes no
-  // container (the book lists them; they cost cover.yml 13% of its time).
+  // Replaces xs with the intersections, in no particular order, of the
+  // shapes whose box the ray meets (t >= 0) before the nearest hit (t >= 0):
+  // every intersection up to the hit of the shapes around and ahead of the
+  // origin, negative t included, which is what the containers algorithm
+  // (prepare_computations) reads, and perhaps some beyond the hit (drop
+  // those before sorting: a room's walls put six intersections on every
+  // line). Shapes wholly behind the origin are left out: a closed surface
+  // there is entered and left, and changes no container (the book lists
+  // them; they cost cover.yml 13% of its time).
   // Returns the hit in xs, the one hit(xs) names, or nullptr when there is
   // none.
   const Intersection* intersect_up_to_hit(const Ray& ray, Intersections& xs) const;
