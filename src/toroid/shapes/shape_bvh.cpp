@@ -257,6 +257,11 @@ template <typename Visit>
 bool ShapeBvh::visit_planes(const Ray& ray, Visit&& visit) const {
   const Tuple& o = ray.origin;
   const Tuple& d = ray.direction;
+  // One plane alone: its own row of its inverse.
+  const auto hit_alone = [&](const Plane& p, double& t) {
+    const Affine& a = p.inverse_affine();
+    return Plane::hit_at(a.row(1, o), a.row(1, d), t);
+  };
 #if defined(TOROID_SSE2)
   const __m128d ox = _mm_set1_pd(o.x), oy = _mm_set1_pd(o.y), oz = _mm_set1_pd(o.z), ow = _mm_set1_pd(o.w);
   const __m128d dx = _mm_set1_pd(d.x), dy = _mm_set1_pd(d.y), dz = _mm_set1_pd(d.z), dw = _mm_set1_pd(d.w);
@@ -280,20 +285,13 @@ bool ShapeBvh::visit_planes(const Ray& ray, Visit&& visit) const {
     met[0] = (parallel & 1) == 0;
     met[1] = (parallel & 2) == 0;
 #else
-    for (int i = 0; i < 2; ++i) {
-      const auto height = [&](const Tuple& v) {
-        return pair.row[0][i] * v.x + pair.row[1][i] * v.y + pair.row[2][i] * v.z + pair.row[3][i] * v.w;
-      };
-      met[i] = Plane::hit_at(height(o), height(d), t[i]);
-    }
+    for (int i = 0; i < 2; ++i) met[i] = hit_alone(*pair.plane[i], t[i]);
 #endif
     for (int i = 0; i < 2; ++i)
       if (met[i] && visit(t[i], pair.plane[i])) return true;
   }
-  if (odd_plane_ == nullptr) return false;
-  const Affine& a = odd_plane_->inverse_affine();
   double t;
-  return Plane::hit_at(a.row(1, o), a.row(1, d), t) && visit(t, odd_plane_);
+  return odd_plane_ != nullptr && hit_alone(*odd_plane_, t) && visit(t, odd_plane_);
 }
 
 std::uint32_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std::size_t end, int depth) {
@@ -346,10 +344,10 @@ bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, Stop&& st
     } else {
       std::uint32_t a = current + 1, b = n.second_child();
       bool met[2];
-      double entry2[2];
-      enters_both(nodes_[a], nodes_[b], r, t_max, met, entry2);
+      double entry[2];
+      enters_both(nodes_[a], nodes_[b], r, t_max, met, entry);
       const bool hit_a = met[0], hit_b = met[1];
-      double ea = entry2[0], eb = entry2[1];
+      double ea = entry[0], eb = entry[1];
       if (hit_a && hit_b) {
         if (eb < ea) {
           std::swap(a, b);

@@ -72,6 +72,18 @@ Intersections line_intersections(const std::vector<std::shared_ptr<Shape>>& shap
   return all;
 }
 
+// The nearest hit by asking every shape in turn.
+bool nearest_of_every_shape(const std::vector<std::shared_ptr<Shape>>& shapes, const Ray& ray, Intersection& hit) {
+  bool found = false;
+  double t_max = kInf;
+  for (const auto& s : shapes)
+    if (s->intersect_nearest(ray, t_max, hit)) {
+      found = true;
+      t_max = hit.t;
+    }
+  return found;
+}
+
 TEST(ShapeBvh, NearestHitIsTheOneEveryShapeGives) {
   const auto shapes = scattered_shapes();
   const ShapeBvh bvh(shapes);
@@ -79,13 +91,7 @@ TEST(ShapeBvh, NearestHitIsTheOneEveryShapeGives) {
   int hits = 0;
   for (const Ray& ray : random_rays(3000)) {
     Intersection expected, got;
-    bool found = false;
-    double t_max = kInf;
-    for (const auto& s : shapes)
-      if (s->intersect_nearest(ray, t_max, expected)) {
-        found = true;
-        t_max = expected.t;
-      }
+    const bool found = nearest_of_every_shape(shapes, ray, expected);
     ASSERT_EQ(bvh.intersect_nearest(ray, kInf, got), found);
     if (!found) continue;
     ++hits;
@@ -115,13 +121,7 @@ TEST(ShapeBvh, AxisParallelRaysAlongBoxFacesFindWhatEveryShapeGives) {
       for (const Ray& ray : {Ray{point(-5, along, across), vector(1, 0, 0)}, Ray{point(along, 20, across), vector(0, -1, 0)},
                              Ray{point(along, across, -5), vector(0, 0, 1)}, Ray{point(along, across, 5), vector(0, 0, -1)}}) {
         Intersection expected, got;
-        bool found = false;
-        double t_max = kInf;
-        for (const auto& s : shapes)
-          if (s->intersect_nearest(ray, t_max, expected)) {
-            found = true;
-            t_max = expected.t;
-          }
+        const bool found = nearest_of_every_shape(shapes, ray, expected);
         ASSERT_EQ(bvh.intersect_nearest(ray, kInf, got), found) << ray.origin << " " << ray.direction;
         if (!found) continue;
         ++hits;
