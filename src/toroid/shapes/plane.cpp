@@ -13,4 +13,10 @@ int Plane::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
 
 Tuple Plane::local_normal_at(const Tuple&, const Intersection&) const { return vector(0, 1, 0); }
 
+Tuple Plane::normal_at(const Tuple& world_point, const Intersection& hit) const {
+  return parent == nullptr ? world_normal_ : Shape::normal_at(world_point, hit);
+}
+
+void Plane::transform_changed() { world_normal_ = normal_to_parent(local_normal_at(point(0, 0, 0), {})); }
+
 }  // namespace toroid

@@ -28,6 +28,18 @@ class Plane : public Primitive<Plane> {
     return true;
   }
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
+  // The same at every point: a plane at the top level answers with the
+  // normal that Shape::normal_at computes, kept from set_transform (the same
+  // operations on the same numbers, so the same bits; a tenth of a room's
+  // shading otherwise). One inside a group asks its parents each time,
+  // since their transforms may change after it joins them.
+  Tuple normal_at(const Tuple& world_point, const Intersection& hit = {}) const override;
+
+ protected:
+  void transform_changed() override;
+
+ private:
+  Tuple world_normal_ = vector(0, 1, 0);  // normal_to_parent(local normal): the world's at the top level
 };
 
 }  // namespace toroid

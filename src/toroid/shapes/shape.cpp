@@ -8,6 +8,7 @@ namespace toroid {
 
 void Shape::set_transform(const Matrix4& m) {
   inverse_ = Affine::from(inverse(m));
+  transform_changed();
   bounds_changed();
 }
 
@@ -17,7 +18,7 @@ Tuple Shape::world_to_object(const Tuple& world_point) const {
 }
 
 Tuple Shape::normal_to_world(const Tuple& object_normal) const {
-  const Tuple n = normalize(inverse_.transpose_times(object_normal));
+  const Tuple n = normal_to_parent(object_normal);
   return parent ? parent->normal_to_world(n) : n;
 }
 

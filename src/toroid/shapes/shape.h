@@ -72,10 +72,17 @@ class Shape {
   }
 
   // Normal at a world-space point; `hit` carries u/v for smooth triangles.
-  Tuple normal_at(const Tuple& world_point, const Intersection& hit = {}) const;
+  // Virtual so that a shape whose normal is the same everywhere (a plane)
+  // can answer without the transforms.
+  virtual Tuple normal_at(const Tuple& world_point, const Intersection& hit = {}) const;
 
   Tuple world_to_object(const Tuple& world_point) const;
   Tuple normal_to_world(const Tuple& object_normal) const;
+  // One step of normal_to_world: an object-space normal in the parent's
+  // space, normalised.
+  Tuple normal_to_parent(const Tuple& object_normal) const {
+    return normalize(inverse_.transpose_times(object_normal));
+  }
 
   // Box in this shape's own object space.
   virtual BoundingBox bounds() const = 0;
@@ -114,6 +121,8 @@ class Shape {
  protected:
   // Told by a child (see bounds_changed) that its box may have moved.
   virtual void child_bounds_changed() const {}
+  // Told by set_transform, after the new inverse is in place.
+  virtual void transform_changed() {}
 
  private:
   Ray to_object_space(const Ray& ray) const { return {inverse_ * ray.origin, inverse_ * ray.direction}; }
