@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <span>
 
 #include "toroid/math/transform.h"
 #include "toroid/render/computations.h"
@@ -145,25 +146,41 @@ TEST(ShapeBvh, BlocksWhenSomeShadowCasterLiesBeforeTMax) {
   EXPECT_GT(blocked, 1000);
 }
 
-TEST(ShapeBvh, ListUpToTheHitHoldsEveryIntersectionBeforeItOfShapesNotBehind) {
+// Every shape made glass, or only the spheres: the index lists everything
+// up to the hit only for a hit that refracts.
+void make_glass(std::span<const std::shared_ptr<Shape>> shapes, bool spheres_only) {
+  Material glass;
+  glass.transparency = 0.9;
+  glass.refractive_index = 1.5;
+  for (const auto& s : shapes) {
+    if (!spheres_only || dynamic_cast<const Sphere*>(s.get())) s->set_material(glass);
+    if (const auto* g = dynamic_cast<const Group*>(s.get())) make_glass(g->children(), spheres_only);
+  }
+}
+
+TEST(ShapeBvh, ListUpToARefractingHitHoldsEveryIntersectionBeforeItOfShapesNotBehindAndEveryPlanes) {
   const auto shapes = scattered_shapes();
+  make_glass(shapes, false);
   const ShapeBvh bvh(shapes);
   Intersections got;
-  int left_out = 0;
+  int left_out = 0, planes = 0;
   for (const Ray& ray : random_rays(2000)) {
     const Intersections all = line_intersections(shapes, ray);
     const Intersection* returned = bvh.intersect_up_to_hit(ray, got);
     ASSERT_EQ(returned, hit(got));  // the hit it names is hit()'s, in its own list
     const Intersection* h = hit(all);
-    const double t_hit = h ? h->t : kInf;
-    if (h) ASSERT_EQ(returned->t, h->t);
+    if (!h) continue;  // no hit: no list to read
+    const double t_hit = h->t;
+    ASSERT_EQ(returned->t, t_hit);
     // It may hold some beyond the hit: the containers algorithm reads up to it.
     std::erase_if(got, [t_hit](const Intersection& x) { return x.t > t_hit; });
     sort_intersections(got);  // the index lists them in no particular order
     // Every intersection up to the hit (negative t included), in order,
-    // unless all of its shape's intersections lie behind the origin.
+    // unless all of its shape's intersections lie behind the origin; a
+    // plane's always (a plane is never wholly behind).
     const auto behind = [&](const Shape* s) {
-      return std::none_of(all.begin(), all.end(), [&](const Intersection& x) { return x.object == s && x.t >= 0; });
+      return dynamic_cast<const Plane*>(s) == nullptr &&
+             std::none_of(all.begin(), all.end(), [&](const Intersection& x) { return x.object == s && x.t >= 0; });
     };
     for (const Intersection& x : got) ASSERT_LE(x.t, t_hit);  // nothing beyond the hit
     std::size_t j = 0;
@@ -173,19 +190,50 @@ TEST(ShapeBvh, ListUpToTheHitHoldsEveryIntersectionBeforeItOfShapesNotBehind) {
         ++left_out;
         continue;
       }
+      if (dynamic_cast<const Plane*>(x.object) && x.t < 0) ++planes;
       while (j < got.size() && !(got[j].t == x.t && got[j].object == x.object)) ++j;
       ASSERT_LT(j, got.size()) << "missing t = " << x.t;
     }
   }
   EXPECT_GT(left_out, 100);  // the rays do start in front of shapes
+  EXPECT_GT(planes, 500);    // and have planes behind them
+}
+
+TEST(ShapeBvh, UpToTheHitNamesTheNearestHitInItsListWhetherItRefractsOrNot) {
+  // Glass spheres among opaque tori, a group and planes: an opaque hit's
+  // list need not be whole, but it holds the hit.
+  const auto shapes = scattered_shapes();
+  make_glass(shapes, true);
+  const ShapeBvh bvh(shapes);
+  Intersections got;
+  int refracting = 0, opaque = 0, on_planes = 0;
+  for (const Ray& ray : random_rays(4000)) {
+    const Intersections all = line_intersections(shapes, ray);
+    const Intersection* h = hit(all);
+    const Intersection* returned = bvh.intersect_up_to_hit(ray, got);
+    if (!h) {
+      ASSERT_EQ(returned, nullptr);
+      continue;
+    }
+    ASSERT_NE(returned, nullptr);
+    ASSERT_GE(returned, got.data());
+    ASSERT_LT(returned, got.data() + got.size());
+    ASSERT_EQ(returned->t, h->t);
+    ASSERT_EQ(returned->object, h->object);
+    ++(h->object->material().transparency > 0 ? refracting : opaque);
+    on_planes += dynamic_cast<const Plane*>(h->object) != nullptr;
+  }
+  EXPECT_GT(refracting, 100);
+  EXPECT_GT(opaque, 100);
+  EXPECT_GT(on_planes, 100);
 }
 
 TEST(ShapeBvh, ListUpToTheHitGivesTheContainersOfTheWholeLine) {
-  // Glass spheres and tori (closed surfaces, some overlapping): n1 and n2
-  // from the index's list are those of the book's list of every
-  // intersection along the line.
+  // Glass spheres, tori (closed surfaces, some overlapping) and planes
+  // (each one toggles the containers): n1 and n2 from the index's list are
+  // those of the book's list of every intersection along the line.
   auto shapes = scattered_shapes();
-  shapes.resize(shapes.size() - 4);  // no groups or planes
+  shapes.erase(shapes.end() - 4);  // no group
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     Material glass;
     glass.transparency = 0.9;
