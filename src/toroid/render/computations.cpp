@@ -15,20 +15,33 @@ namespace {
 bool same(const Intersection& a, const Intersection& b) { return a.t == b.t && a.object == b.object; }
 
 // The containers algorithm: walk the sorted intersections, tracking which
-// objects the ray is inside, up to the hit.
+// objects the ray is inside (in the order entered), up to the hit. Every
+// refracting hit asks: the list of objects lives on the stack while it is
+// short (it never holds more objects than xs holds intersections).
 void refractive_indices(const Intersection& hit, std::span<const Intersection> xs, Computations& comps) {
-  thread_local std::vector<const Shape*> containers;
-  containers.clear();
+  constexpr std::size_t kOnStack = 16;
+  const Shape* on_stack[kOnStack];
+  thread_local std::vector<const Shape*> on_heap;
+  const Shape** containers = on_stack;
+  if (xs.size() > kOnStack) {
+    on_heap.resize(xs.size());
+    containers = on_heap.data();
+  }
+  std::size_t inside = 0;
+  const auto innermost = [&] { return inside == 0 ? 1.0 : containers[inside - 1]->material().refractive_index; };
   for (const Intersection& x : xs) {
     const bool is_hit = same(x, hit);
-    if (is_hit) comps.n1 = containers.empty() ? 1.0 : containers.back()->material().refractive_index;
-    const auto found = std::find(containers.begin(), containers.end(), x.object);
-    if (found != containers.end())
-      containers.erase(found);
-    else
-      containers.push_back(x.object);
+    if (is_hit) comps.n1 = innermost();
+    std::size_t i = 0;
+    while (i < inside && containers[i] != x.object) ++i;
+    if (i < inside) {  // leaving it: the others keep their order
+      std::copy(containers + i + 1, containers + inside, containers + i);
+      --inside;
+    } else {
+      containers[inside++] = x.object;
+    }
     if (is_hit) {
-      comps.n2 = containers.empty() ? 1.0 : containers.back()->material().refractive_index;
+      comps.n2 = innermost();
       return;
     }
   }
