@@ -3,8 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "support/approx.h"
 #include "toroid/math/transform.h"
@@ -111,6 +114,55 @@ TEST(Intersections, FindingN1AndN2AtVariousIntersections) {
     EXPECT_EQ(comps.n1, e.n1);
     EXPECT_EQ(comps.n2, e.n2);
   }
+}
+
+// The book's containers algorithm as its pseudo-code reads, for the test
+// below: a list, append or remove, stop at the hit.
+std::pair<double, double> book_n1_n2(const Intersection& hit, const Intersections& xs) {
+  std::vector<const Shape*> containers;
+  double n1 = 1, n2 = 1;
+  for (const Intersection& x : xs) {
+    const bool is_hit = x.t == hit.t && x.object == hit.object;
+    if (is_hit) n1 = containers.empty() ? 1.0 : containers.back()->material().refractive_index;
+    const auto found = std::find(containers.begin(), containers.end(), x.object);
+    if (found != containers.end()) containers.erase(found);
+    else containers.push_back(x.object);
+    if (is_hit) {
+      n2 = containers.empty() ? 1.0 : containers.back()->material().refractive_index;
+      break;
+    }
+  }
+  return {n1, n2};
+}
+
+TEST(Intersections, N1AndN2AlongAChainOfOverlappingGlassSpheresLongerThanTheShortList) {
+  // Twelve spheres along z, each overlapping the next (as b and c above):
+  // 24 intersections, more than the containers' short list holds, and
+  // spheres left while a later one is still inside.
+  std::vector<std::shared_ptr<Sphere>> spheres;
+  Intersections xs;
+  for (int i = 0; i < 12; ++i) {
+    auto s = glass_sphere();
+    s->set_transform(translation(0, 0, 0.5 * i));
+    Material m = s->material();
+    m.refractive_index = 1.1 + 0.1 * i;
+    s->set_material(m);
+    spheres.push_back(s);
+  }
+  const Ray r{point(0, 0, -4), vector(0, 0, 1)};
+  for (const auto& s : spheres) s->intersect(r, xs);
+  sort_intersections(xs);
+  ASSERT_EQ(xs.size(), 24u);
+  int left_mid_list = 0;
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    SCOPED_TRACE(::testing::Message() << "index " << k);
+    const Computations comps = prepare_computations(xs[k], r, xs);
+    const auto [n1, n2] = book_n1_n2(xs[k], xs);
+    EXPECT_EQ(comps.n1, n1);
+    EXPECT_EQ(comps.n2, n2);
+    left_mid_list += n1 == n2;  // left a sphere that was not the innermost
+  }
+  EXPECT_GT(left_mid_list, 5);
 }
 
 TEST(Intersections, TheSchlickApproximationUnderTotalInternalReflection) {
