@@ -34,6 +34,8 @@ namespace {
 // peel them off one at a time), so the walk's stack has a bound.
 constexpr int kAreaSplitDepth = 32;
 constexpr int kStackSize = kAreaSplitDepth + 32;
+// build()'s name for the root's own node (root_) as a parent.
+constexpr std::size_t kRoot = static_cast<std::size_t>(-1);
 
 float round_down(double x) {
   const float f = static_cast<float>(x);
@@ -55,15 +57,16 @@ bool is_bounded(const BoundingBox& b) {
 struct SlabRay {
   double origin[3];
   double inv[3];
-  // Where in a node's box the side of each slab that the ray meets first
-  // (near) and last (far) is: the high side first when inv < 0.
+  // Where in a node's boxes the side of each slab that the ray meets first
+  // (near) and last (far) is (for child 0; child 1's follows): the high
+  // side first when inv < 0.
   int near[3], far[3];
   double t_min;
   SlabRay(const Ray& r, double from)
       : origin{r.origin.x, r.origin.y, r.origin.z},
         inv{1.0 / r.direction.x, 1.0 / r.direction.y, 1.0 / r.direction.z},
-        near{inv[0] < 0 ? 3 : 0, inv[1] < 0 ? 4 : 1, inv[2] < 0 ? 5 : 2},
-        far{inv[0] < 0 ? 0 : 3, inv[1] < 0 ? 1 : 4, inv[2] < 0 ? 2 : 5},
+        near{inv[0] < 0 ? 2 : 0, inv[1] < 0 ? 6 : 4, inv[2] < 0 ? 10 : 8},
+        far{inv[0] < 0 ? 0 : 2, inv[1] < 0 ? 4 : 6, inv[2] < 0 ? 8 : 10},
         t_min(from) {}
 };
 
@@ -87,17 +90,18 @@ struct ShapeBvh::Item {
 
 namespace {
 
-// Where the ray enters the node's box, when it meets it at some
-// r.t_min <= t <= t_max (for t_min = 0, the test of BoundingBox::intersects).
-// Clips [t_min, t_max] by the three slabs; as in detail::clip_slab, a NaN
-// bound (0 * inf: the origin on a slab plane of a parallel ray) leaves the
-// interval as it was, because comparisons with NaN fail.
+// Where the ray enters the box of the node's `child`, when it meets it at
+// some r.t_min <= t <= t_max (for t_min = 0, the test of
+// BoundingBox::intersects). Clips [t_min, t_max] by the three slabs; as in
+// detail::clip_slab, a NaN bound (0 * inf: the origin on a slab plane of a
+// parallel ray) leaves the interval as it was, because comparisons with NaN
+// fail.
 template <typename Node>
-bool enters(const Node& n, const SlabRay& r, double t_max, double& entry) {
+bool enters(const Node& n, int child, const SlabRay& r, double t_max, double& entry) {
   double tmin = r.t_min, tmax = t_max;
   for (int a = 0; a < 3; ++a) {
-    const double t0 = (static_cast<double>(n.box[r.near[a]]) - r.origin[a]) * r.inv[a];
-    const double t1 = (static_cast<double>(n.box[r.far[a]]) - r.origin[a]) * r.inv[a];
+    const double t0 = (static_cast<double>(n.box[r.near[a] + child]) - r.origin[a]) * r.inv[a];
+    const double t1 = (static_cast<double>(n.box[r.far[a] + child]) - r.origin[a]) * r.inv[a];
     tmin = t0 > tmin ? t0 : tmin;
     tmax = t1 < tmax ? t1 : tmax;
   }
@@ -106,20 +110,27 @@ bool enters(const Node& n, const SlabRay& r, double t_max, double& entry) {
   return true;
 }
 
-// enters() for two nodes at once, one in each lane of an SSE2 register (every
-// x86-64 has it): the same operations in the same order, so the same answers
-// bit for bit, in fewer instructions (a walk tests both children of a node).
-// MAXPD and MINPD are the scalar code's `t0 > tmin ? t0 : tmin` and
-// `t1 < tmax ? t1 : tmax`, NaN included: they return the second operand
+#if defined(TOROID_SSE2)
+// Two floats side by side, child 0's and child 1's, as two doubles (exact).
+__m128d load_pair(const float* p) {
+  return _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p))));
+}
+#endif
+
+// enters() for both children of a node, one in each lane of an SSE2 register
+// (every x86-64 has it): the same operations in the same order, so the same
+// answers bit for bit, in fewer instructions (a walk tests both children of
+// a node). MAXPD and MINPD are the scalar code's `t0 > tmin ? t0 : tmin`
+// and `t1 < tmax ? t1 : tmax`, NaN included: they return the second operand
 // when a comparison fails.
 template <typename Node>
-void enters_both(const Node& a, const Node& b, const SlabRay& r, double t_max, bool met[2], double entry[2]) {
+void enters_both(const Node& n, const SlabRay& r, double t_max, bool met[2], double entry[2]) {
 #if defined(TOROID_SSE2)
   __m128d tmin = _mm_set1_pd(r.t_min), tmax = _mm_set1_pd(t_max);
   for (int axis = 0; axis < 3; ++axis) {
     const __m128d origin = _mm_set1_pd(r.origin[axis]), inv = _mm_set1_pd(r.inv[axis]);
-    const __m128d near = _mm_set_pd(b.box[r.near[axis]], a.box[r.near[axis]]);
-    const __m128d far = _mm_set_pd(b.box[r.far[axis]], a.box[r.far[axis]]);
+    const __m128d near = load_pair(&n.box[r.near[axis]]);
+    const __m128d far = load_pair(&n.box[r.far[axis]]);
     tmin = _mm_max_pd(_mm_mul_pd(_mm_sub_pd(near, origin), inv), tmin);
     tmax = _mm_min_pd(_mm_mul_pd(_mm_sub_pd(far, origin), inv), tmax);
   }
@@ -128,8 +139,8 @@ void enters_both(const Node& a, const Node& b, const SlabRay& r, double t_max, b
   met[1] = (le & 2) != 0;
   _mm_storeu_pd(entry, tmin);
 #else
-  met[0] = enters(a, r, t_max, entry[0]);
-  met[1] = enters(b, r, t_max, entry[1]);
+  met[0] = enters(n, 0, r, t_max, entry[0]);
+  met[1] = enters(n, 1, r, t_max, entry[1]);
 #endif
 }
 
@@ -155,8 +166,9 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shape
     items.push_back(it);
   }
   if (items.empty()) return;
-  nodes_.reserve(2 * items.size() - 1);
-  build(items, 0, items.size(), 0);
+  nodes_.reserve(items.size() - 1);
+  root_.link[0] = build(items, 0, items.size(), 0, kRoot, 0);
+  has_root_ = true;
   nodes_.shrink_to_fit();
 }
 
@@ -294,31 +306,36 @@ bool ShapeBvh::visit_planes(const Ray& ray, Visit&& visit) const {
   return odd_plane_ != nullptr && hit_alone(*odd_plane_, t) && visit(t, odd_plane_);
 }
 
-std::uint32_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std::size_t end, int depth) {
+std::uintptr_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std::size_t end, int depth,
+                               std::size_t parent, int child) {
   depth_ = std::max(depth_, depth);
   BoundingBox box, centres;
   for (std::size_t i = begin; i < end; ++i) {
     box.merge(items[i].box);
     centres.add_point(point(items[i].centre[0], items[i].centre[1], items[i].centre[2]));
   }
-  const auto index = static_cast<std::uint32_t>(nodes_.size());
-  Node node{{round_down(box.min.x), round_down(box.min.y), round_down(box.min.z), round_up(box.max.x),
-             round_up(box.max.y), round_up(box.max.z)},
-            0};
+  {
+    Node& p = parent == kRoot ? root_ : nodes_[parent];
+    const double low[3] = {box.min.x, box.min.y, box.min.z}, high[3] = {box.max.x, box.max.y, box.max.z};
+    for (int a = 0; a < 3; ++a) {
+      p.box[4 * a + child] = round_down(low[a]);
+      p.box[4 * a + 2 + child] = round_up(high[a]);
+    }
+  }
   if (end - begin == 1) {
     static_assert(alignof(Shape) > 1, "a leaf's link needs its low bit clear");
-    node.link = reinterpret_cast<std::uintptr_t>(items[begin].shape);
-    nodes_.push_back(node);
-    return index;
+    return reinterpret_cast<std::uintptr_t>(items[begin].shape);
   }
   // Shapes whose centres coincide are split too (split() falls back on the
   // median): one shape per leaf.
   const std::size_t mid = split(items, begin, end, centres, depth < kAreaSplitDepth);
-  nodes_.push_back(node);
-  build(items, begin, mid, depth + 1);  // lands at index + 1
-  const std::uint32_t right = build(items, mid, end, depth + 1);
-  nodes_[index].link = (static_cast<std::uintptr_t>(right) << 1) | 1;
-  return index;
+  const std::size_t index = nodes_.size();
+  nodes_.push_back({});
+  const std::uintptr_t first = build(items, begin, mid, depth + 1, index, 0);
+  const std::uintptr_t second = build(items, mid, end, depth + 1, index, 1);
+  nodes_[index].link[0] = first;
+  nodes_[index].link[1] = second;
+  return (static_cast<std::uintptr_t>(index) << 1) | 1;
 }
 
 // Walks the boxes the ray enters at some t_min <= t <= t_max, nearer child
@@ -330,22 +347,22 @@ template <typename Stop>
 bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const {
   const SlabRay r(ray, t_min);
   double entry;
-  if (nodes_.empty() || !enters(nodes_[0], r, t_max, entry)) return false;
+  if (!has_root_ || !enters(root_, 0, r, t_max, entry)) return false;
   struct Pending {
-    std::uint32_t node;
+    std::uintptr_t link;
     double entry;
   } stack[kStackSize];
   int depth = 0;
-  std::uint32_t current = 0;
+  std::uintptr_t current = root_.link[0];
   for (;;) {
-    const Node& n = nodes_[current];
-    if (n.is_leaf()) {
-      if (stop(n.shape())) return true;
+    if (is_leaf(current)) {
+      if (stop(reinterpret_cast<const Shape*>(current))) return true;
     } else {
-      std::uint32_t a = current + 1, b = n.second_child();
+      const Node& n = nodes_[current >> 1];
+      std::uintptr_t a = n.link[0], b = n.link[1];
       bool met[2];
       double entry[2];
-      enters_both(nodes_[a], nodes_[b], r, t_max, met, entry);
+      enters_both(n, r, t_max, met, entry);
       const bool hit_a = met[0], hit_b = met[1];
       double ea = entry[0], eb = entry[1];
       if (hit_a && hit_b) {
@@ -366,7 +383,7 @@ bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, Stop&& st
       if (depth == 0) return false;
       --depth;
     } while (stack[depth].entry > t_max);
-    current = stack[depth].node;
+    current = stack[depth].link;
   }
 }
 

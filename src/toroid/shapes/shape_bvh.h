@@ -67,24 +67,26 @@ class ShapeBvh {
   std::size_t bytes() const;
 
  private:
-  // Boxes in float, rounded outwards, so that a node takes 32 bytes. Every
-  // leaf holds one shape, named by the node itself (no list of shapes
-  // beside the nodes: 64 bytes of index per shape, docs/performance.md).
+  // An interior node: the boxes of its two children, in float, rounded
+  // outwards, laid out so that one load gives one side of one slab for both
+  // children (the walk tests the two at once), and a link to each child. A
+  // link is a leaf's shape (its address: shapes are aligned, so the low bit
+  // is clear) or 2 * (index of an interior node) + 1. Every leaf holds one
+  // shape, and there is one interior node fewer than shapes: 64 bytes of
+  // index per shape (docs/performance.md).
   struct Node {
-    float box[6];  // low x, y, z, then high x, y, z
-    // A leaf: its shape's address. An interior node: 2 * (index of its
-    // second child) + 1; the first child follows the node. Shapes are
-    // aligned, so the low bit tells the two apart.
-    std::uintptr_t link;
-    bool is_leaf() const { return (link & 1) == 0; }
-    const Shape* shape() const { return reinterpret_cast<const Shape*>(link); }
-    std::uint32_t second_child() const { return static_cast<std::uint32_t>(link >> 1); }
+    float box[12];  // box[4 * axis + 2 * side + child]: side 0 low, 1 high
+    std::uintptr_t link[2];
   };
+  static bool is_leaf(std::uintptr_t link) { return (link & 1) == 0; }
   struct Item;
 
   static std::size_t split(std::vector<Item>& items, std::size_t begin, std::size_t end, const BoundingBox& centres,
                            bool by_area);
-  std::uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end, int depth);
+  // Builds the hierarchy of items[begin, end) and returns its link; puts its
+  // box in `child` of `parent`.
+  std::uintptr_t build(std::vector<Item>& items, std::size_t begin, std::size_t end, int depth, std::size_t parent,
+                       int child);
   template <typename Stop>
   bool walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const;
 
@@ -102,7 +104,11 @@ class ShapeBvh {
   template <typename Visit>
   bool visit_planes(const Ray& ray, Visit&& visit) const;
 
-  std::vector<Node> nodes_;
+  std::vector<Node> nodes_;  // interior nodes
+  // The root's box and link, as child 0 of a node of its own (child 1
+  // unused); has_root_ is false when nothing bounded is indexed.
+  Node root_{};
+  bool has_root_ = false;
   std::vector<PlanePair> planes_;        // unbounded planes, tested by every query
   const Plane* odd_plane_ = nullptr;     // the last of an odd number of them
   std::vector<const Shape*> unbounded_;  // other unbounded shapes, likewise
