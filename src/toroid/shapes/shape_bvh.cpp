@@ -65,9 +65,13 @@ struct SlabRay {
   SlabRay(const Ray& r, double from)
       : origin{r.origin.x, r.origin.y, r.origin.z},
         inv{1.0 / r.direction.x, 1.0 / r.direction.y, 1.0 / r.direction.z},
-        near{inv[0] < 0 ? 2 : 0, inv[1] < 0 ? 6 : 4, inv[2] < 0 ? 10 : 8},
-        far{inv[0] < 0 ? 0 : 2, inv[1] < 0 ? 4 : 6, inv[2] < 0 ? 8 : 10},
-        t_min(from) {}
+        t_min(from) {
+    for (int a = 0; a < 3; ++a) {
+      const int high_first = inv[a] < 0;  // no branches: the sign is a coin toss from ray to ray
+      near[a] = 4 * a + 2 * high_first;
+      far[a] = 4 * a + 2 - 2 * high_first;
+    }
+  }
 };
 
 // Whether `s` or a shape below it refracts.
@@ -345,9 +349,13 @@ std::uintptr_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std:
 // on the stack beyond it are skipped.
 template <typename Stop>
 bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const {
+  // The root's own box first, even though its children's lie inside it:
+  // most rays that miss everything miss it, and one box costs less than
+  // two (without it, reflect-refract +1.0%, far +2.7% instructions).
+  if (!has_root_) return false;
   const SlabRay r(ray, t_min);
   double entry;
-  if (!has_root_ || !enters(root_, 0, r, t_max, entry)) return false;
+  if (!enters(root_, 0, r, t_max, entry)) return false;
   struct Pending {
     std::uintptr_t link;
     double entry;
