@@ -45,21 +45,21 @@ run_one() {
   read -r wall user sys <"$work/t$2"
   echo "$wall $(awk -v u="$user" -v s="$sys" 'BEGIN { printf "%.2f", u + s }')"
 }
-less() { awk -v a="$1" -v b="$2" 'BEGIN { print (b == "" || a < b) ? a : b }'; }
+least() { awk -v a="$1" -v b="$2" 'BEGIN { print (b == "" || a < b) ? a : b }'; }
 
 w1="" c1="" w2="" c2="" wp=""
 for ((i = 0; i < reps; i++)); do
   read -r w c < <(run_one 1 a)
-  w1=$(less "$w" "$w1") c1=$(less "$c" "$c1")
+  w1=$(least "$w" "$w1") c1=$(least "$c" "$c1")
   read -r w c < <(run_one 2 a)
-  w2=$(less "$w" "$w2") c2=$(less "$c" "$c2")
+  w2=$(least "$w" "$w2") c2=$(least "$c" "$c2")
   # The control: two 1-thread renders at once; the pair's wall time.
   start=$(date +%s.%N)
   run_one 1 b >/dev/null &
   run_one 1 c >/dev/null
   wait
   w=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { printf "%.2f", b - a }')
-  wp=$(less "$w" "$wp")
+  wp=$(least "$w" "$wp")
 done
 echo "scene: ${1:-bench/vs-povray tori25} ${size[*]}"
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; least of $reps runs; load average now: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -151,6 +151,7 @@ void enters_both(const Node& n, const SlabRay& r, double t_max, bool met[2], dou
 }  // namespace
 
 ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shapes.size()) {
+  static_assert(sizeof(Node) == 64, "docs/performance.md counts 64 bytes of index per shape");
   static std::atomic<std::uint64_t> next_serial{1};
   serial_ = next_serial++;
   std::vector<Item> items;
