@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/intersect.h"
 
 namespace {
 
@@ -54,7 +54,7 @@ const std::vector<BenchRay>& rays(bool hits_only) {
   return hits_only ? hits : mixed;
 }
 
-void BM_AllRoots(benchmark::State& state, toroid::QuarticSolver solver, bool hits_only) {
+void BM_AllRoots(benchmark::State& state, toroid::TorusSolver solver, bool hits_only) {
   const auto& rs = rays(hits_only);
   size_t i = 0;
   double t[4];
@@ -66,7 +66,7 @@ void BM_AllRoots(benchmark::State& state, toroid::QuarticSolver solver, bool hit
   state.SetItemsProcessed(state.iterations());
 }
 
-void BM_Nearest(benchmark::State& state, toroid::QuarticSolver solver) {
+void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver) {
   const auto& rs = rays(false);
   size_t i = 0;
   double t = 0;
@@ -79,21 +79,21 @@ void BM_Nearest(benchmark::State& state, toroid::QuarticSolver solver) {
   state.SetItemsProcessed(state.iterations());
 }
 
-using toroid::QuarticSolver;
+using toroid::TorusSolver;
 
 // The minimum over repetitions is what the code costs; the mean and median
 // also carry whatever else the machine was doing.
 double min_of(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
 #define TOROID_BENCH(...) BENCHMARK_CAPTURE(__VA_ARGS__)->Repetitions(10)->ComputeStatistics("min", min_of)
 
-TOROID_BENCH(BM_AllRoots, default_mixed, QuarticSolver::Default, false);
-TOROID_BENCH(BM_AllRoots, ferrari_mixed, QuarticSolver::Ferrari, false);
-TOROID_BENCH(BM_AllRoots, tianheng_mixed, QuarticSolver::Tianheng, false);
-TOROID_BENCH(BM_AllRoots, default_hits, QuarticSolver::Default, true);
-TOROID_BENCH(BM_AllRoots, ferrari_hits, QuarticSolver::Ferrari, true);
-TOROID_BENCH(BM_AllRoots, tianheng_hits, QuarticSolver::Tianheng, true);
-TOROID_BENCH(BM_Nearest, default_mixed, QuarticSolver::Default);
-TOROID_BENCH(BM_Nearest, ferrari_mixed, QuarticSolver::Ferrari);
-TOROID_BENCH(BM_Nearest, tianheng_mixed, QuarticSolver::Tianheng);
+TOROID_BENCH(BM_AllRoots, default_mixed, TorusSolver::Default, false);
+TOROID_BENCH(BM_AllRoots, ferrari_mixed, TorusSolver::Ferrari, false);
+TOROID_BENCH(BM_AllRoots, tianheng_mixed, TorusSolver::Tianheng, false);
+TOROID_BENCH(BM_AllRoots, default_hits, TorusSolver::Default, true);
+TOROID_BENCH(BM_AllRoots, ferrari_hits, TorusSolver::Ferrari, true);
+TOROID_BENCH(BM_AllRoots, tianheng_hits, TorusSolver::Tianheng, true);
+TOROID_BENCH(BM_Nearest, default_mixed, TorusSolver::Default);
+TOROID_BENCH(BM_Nearest, ferrari_mixed, TorusSolver::Ferrari);
+TOROID_BENCH(BM_Nearest, tianheng_mixed, TorusSolver::Tianheng);
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "toroid/io/ray_line.h"
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/intersect.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
   std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const Family& f : make_families(n)) {
     const ReferenceSet ref = compute_references(f);
-    for (QuarticSolver s : {QuarticSolver::Default, QuarticSolver::Ferrari, QuarticSolver::Tianheng}) {
+    for (TorusSolver s : {TorusSolver::Default, TorusSolver::Ferrari, TorusSolver::Tianheng}) {
       const Metrics m = measure(f, ref, s);
       std::printf("| %s | %s | %d | %d | %d | %d | %d | %d | %.1e | %.1e | %.1e | %d/%d |\n", f.name.c_str(),
                   std::string(solver_name(s)).c_str(), m.rays, m.reference_roots, m.missed - m.missed_subvisible,

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "accuracy/harness.h"
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/intersect.h"
 
 namespace toroid::accuracy {
 namespace {
@@ -21,7 +21,7 @@ const std::vector<Family>& families() {
 
 TEST_P(AccuracyBars, DefaultSolverMeetsTheBars) {
   const Family& f = families()[GetParam()];
-  const Metrics m = measure(f, compute_references(f), QuarticSolver::Default);
+  const Metrics m = measure(f, compute_references(f), TorusSolver::Default);
   SCOPED_TRACE(f.name);
   EXPECT_GT(m.reference_roots, f.rays.size() / 2) << "family should mostly hit the torus";
   EXPECT_EQ(m.missed - m.missed_subvisible, 0);
@@ -81,7 +81,7 @@ TEST(AccuracyHarness, DetectsMissingRoots) {
   // Reference against itself minus one root per ray: every removed root is a miss.
   Family shifted = f;
   for (RayCase& c : shifted.rays) c.minor *= 1.01;  // a different torus: roots move
-  const Metrics m = measure(shifted, ref, QuarticSolver::Default);
+  const Metrics m = measure(shifted, ref, TorusSolver::Default);
   EXPECT_GT(m.missed + m.spurious, 0);
 }
 

@@ -112,7 +112,9 @@ TEST_P(BadInputCorpus, ExitsTwoWithItsMessageAndWritesNothing) {
     EXPECT_EQ(r.exit_code, 2) << "stderr: " << r.err;
     EXPECT_NE(r.err.find(expected), std::string::npos) << "stderr: " << r.err << "\nexpected: " << expected;
     EXPECT_EQ(listing(work_), before) << "files appeared or vanished";
-    if (existing) EXPECT_EQ(read_text(out), "an image from before");
+    if (existing) {
+      EXPECT_EQ(read_text(out), "an image from before");
+    }
   }
 }
 

@@ -8,7 +8,7 @@
 #include "support/approx.h"
 #include "toroid/math/transform.h"
 #include "toroid/render/camera.h"
-#include "toroid/render/canvas.h"
+#include "toroid/core/canvas.h"
 #include "toroid/render/world.h"
 
 namespace toroid {

@@ -41,7 +41,7 @@
 #include "toroid/shapes/plane.h"
 #include "toroid/shapes/sphere.h"
 #include "toroid/shapes/torus.h"
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/surface.h"
 
 namespace toroid {
 namespace {

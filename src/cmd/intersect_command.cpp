@@ -1,5 +1,5 @@
 // `toroid intersect`: rays on stdin, roots on stdout (see README).
-#include "intersect_command.h"
+#include "cmd/intersect_command.h"
 
 #include <cmath>
 #include <iostream>
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "toroid/io/ray_line.h"
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/intersect.h"
 
 namespace toroid::cmd {
 namespace {
@@ -19,7 +19,7 @@ struct IntersectOptions {
 };
 
 int run_intersect(const IntersectOptions& opt) {
-  const QuarticSolver solver = *solver_from_name(opt.solver);
+  const TorusSolver solver = *solver_from_name(opt.solver);
   std::ios::sync_with_stdio(false);
   std::string line, out;
   long line_no = 0;

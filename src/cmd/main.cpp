@@ -1,8 +1,8 @@
 // The `toroid` command line: a thin layer over the library.
 #include <CLI/CLI.hpp>
 
-#include "intersect_command.h"
-#include "render_command.h"
+#include "cmd/intersect_command.h"
+#include "cmd/render_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"toroid: a ray tracer with an exact, analytic torus"};

@@ -1,5 +1,5 @@
 // `toroid render`: a YAML scene to a PNG or PPM image.
-#include "render_command.h"
+#include "cmd/render_command.h"
 
 #include <unistd.h>
 

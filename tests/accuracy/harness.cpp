@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/intersect.h"
 
 namespace toroid::accuracy {
 namespace {
@@ -171,7 +171,7 @@ ReferenceSet compute_references(const Family& f) {
   return set;
 }
 
-Metrics measure(const Family& f, const ReferenceSet& ref, QuarticSolver solver) {
+Metrics measure(const Family& f, const ReferenceSet& ref, TorusSolver solver) {
   Metrics m;
   for (size_t k = 0; k < f.rays.size(); ++k) {
     const RayCase& c = f.rays[k];

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "accuracy/reference.h"
-#include "toroid/roots/quartic.h"
+#include "toroid/torus/solver.h"
 
 namespace toroid::accuracy {
 
@@ -42,6 +42,6 @@ struct ReferenceSet {
 };
 
 ReferenceSet compute_references(const Family& f);
-Metrics measure(const Family& f, const ReferenceSet& ref, QuarticSolver solver);
+Metrics measure(const Family& f, const ReferenceSet& ref, TorusSolver solver);
 
 }  // namespace toroid::accuracy

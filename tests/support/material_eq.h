@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "toroid/render/material.h"
+#include "toroid/core/material.h"
 
 namespace toroid::testing {
 

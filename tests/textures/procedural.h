@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <string>
 
-#include "toroid/render/canvas.h"
+#include "toroid/core/canvas.h"
 #include "toroid/render/uv_mapping.h"
 
 namespace toroid::textures {

@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "toroid/render/canvas.h"
+#include "toroid/core/canvas.h"
 
 namespace toroid {
 

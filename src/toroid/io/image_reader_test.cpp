@@ -147,7 +147,9 @@ TEST(ReadImage, SrgbDecodingInvertsTheWritersEncoding) {
   EXPECT_NEAR(srgb8_to_linear(3), 3 / 255.0 / 12.92, 1e-15);  // the linear segment
   for (int code = 0; code < 256; ++code) {
     EXPECT_EQ(linear_to_srgb8(srgb8_to_linear(static_cast<unsigned char>(code))), code);
-    if (code > 0) EXPECT_GT(srgb8_to_linear(static_cast<unsigned char>(code)), srgb8_to_linear(code - 1));
+    if (code > 0) {
+      EXPECT_GT(srgb8_to_linear(static_cast<unsigned char>(code)), srgb8_to_linear(code - 1));
+    }
   }
 }
 
@@ -166,9 +168,10 @@ TEST(ReadImage, PngAndPpmFilesReadBackWhatWriteImageWrote) {
       for (int x = 0; x < 5; ++x) {
         const Color want = c.pixel_at(x, y), got = back.pixel_at(x, y);
         // PNG: the sRGB code written decodes to the exact code's value.
-        if (std::string(name) == "c.png")
+        if (std::string(name) == "c.png") {
           EXPECT_APPROX(got, Color(srgb8_to_linear(linear_to_srgb8(want.r)), srgb8_to_linear(linear_to_srgb8(want.g)),
                                    srgb8_to_linear(linear_to_srgb8(want.b))));
+        }
         EXPECT_TRUE(approx_equal(got, want, 0.01)) << x << ", " << y << ": " << got;
       }
   }

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "toroid/render/canvas.h"
+#include "toroid/core/canvas.h"
 
 namespace toroid {
 

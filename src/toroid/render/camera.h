@@ -3,8 +3,8 @@
 #pragma once
 
 #include "toroid/math/matrix.h"
-#include "toroid/render/canvas.h"
-#include "toroid/render/ray.h"
+#include "toroid/core/canvas.h"
+#include "toroid/core/ray.h"
 
 namespace toroid {
 

@@ -4,8 +4,8 @@
 #include <limits>
 
 #include "toroid/math/tuple.h"
-#include "toroid/render/intersection.h"
-#include "toroid/render/ray.h"
+#include "toroid/core/intersection.h"
+#include "toroid/core/ray.h"
 
 namespace toroid {
 

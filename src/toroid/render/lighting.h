@@ -5,7 +5,7 @@
 #include "toroid/math/color.h"
 #include "toroid/math/tuple.h"
 #include "toroid/render/light.h"
-#include "toroid/render/material.h"
+#include "toroid/core/material.h"
 
 namespace toroid {
 

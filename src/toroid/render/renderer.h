@@ -7,7 +7,7 @@
 #include <functional>
 
 #include "toroid/render/camera.h"
-#include "toroid/render/canvas.h"
+#include "toroid/core/canvas.h"
 #include "toroid/render/world.h"
 
 namespace toroid {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/surface.h"
 
 namespace toroid {
 

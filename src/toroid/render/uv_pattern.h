@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "toroid/math/color.h"
-#include "toroid/render/canvas.h"
+#include "toroid/core/canvas.h"
 
 namespace toroid {
 

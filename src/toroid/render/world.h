@@ -8,9 +8,9 @@
 
 #include "toroid/math/color.h"
 #include "toroid/render/computations.h"
-#include "toroid/render/intersection.h"
+#include "toroid/core/intersection.h"
 #include "toroid/render/light.h"
-#include "toroid/render/ray.h"
+#include "toroid/core/ray.h"
 #include "toroid/shapes/shape_bvh.h"
 
 namespace toroid {

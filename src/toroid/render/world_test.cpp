@@ -393,7 +393,9 @@ TEST(WorldExtra, AnAreaLightCastsAnUmbraAndAPenumbra) {
     for (double x = 0; x <= 5; x += 0.05) {
       const double f = intensity_at(light, on_floor(x), w);
       if (f > 0 && f < 1) ++partial;
-      if (!jitter) EXPECT_GE(f, last) << "x = " << x;
+      if (!jitter) {
+        EXPECT_GE(f, last) << "x = " << x;
+      }
       last = f;
     }
     EXPECT_GE(partial, 3);

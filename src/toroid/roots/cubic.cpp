@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "toroid/roots/quartic.h"
+#include "toroid/roots/polynomial.h"
 
 namespace toroid {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "support/mp_poly.h"
-#include "toroid/roots/quartic.h"
+#include "toroid/roots/polynomial.h"
 
 namespace toroid {
 namespace {

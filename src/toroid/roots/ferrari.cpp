@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "toroid/roots/quartic.h"
+#include "toroid/roots/polynomial.h"
 
 namespace toroid {
 

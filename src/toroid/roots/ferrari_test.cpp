@@ -8,7 +8,7 @@
 
 #include "support/mp_poly.h"
 #include "support/quartic_cases.h"
-#include "toroid/roots/quartic.h"
+#include "toroid/roots/polynomial.h"
 
 namespace toroid {
 namespace {

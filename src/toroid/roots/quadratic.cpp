@@ -2,7 +2,7 @@
 #include <cmath>
 #include <utility>
 
-#include "toroid/roots/quartic.h"
+#include "toroid/roots/polynomial.h"
 
 namespace toroid {
 

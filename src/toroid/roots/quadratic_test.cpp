@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "support/mp_poly.h"
-#include "toroid/roots/quartic.h"
+#include "toroid/roots/polynomial.h"
 
 namespace toroid {
 namespace {

@@ -11,7 +11,7 @@
 #include <cfloat>
 #include <cmath>
 
-#include "toroid/roots/quartic.h"
+#include "toroid/roots/polynomial.h"
 
 namespace toroid {
 

@@ -23,7 +23,7 @@
 #include "toroid/math/transform.h"
 #include "toroid/render/image_limits.h"
 #include "toroid/render/pattern.h"
-#include "toroid/render/shared_material.h"
+#include "toroid/core/shared_material.h"
 #include "toroid/render/texture_map.h"
 #include "toroid/scene/obj_file.h"
 #include "toroid/scene/yaml_items.h"

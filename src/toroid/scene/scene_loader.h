@@ -9,7 +9,7 @@
 
 #include "toroid/render/camera.h"
 #include "toroid/render/world.h"
-#include "toroid/roots/quartic.h"
+#include "toroid/torus/solver.h"
 
 namespace toroid {
 
@@ -26,7 +26,7 @@ struct Scene {
 
 struct SceneLoadOptions {
   // When set, every torus uses this solver (its own `solver:` key is ignored).
-  std::optional<QuarticSolver> solver;
+  std::optional<TorusSolver> solver;
   // Build yaml-cpp's node tree of the whole document at once rather than of
   // one top-level item at a time: the same scene or error, more memory
   // (for tests that compare the two).

@@ -155,7 +155,7 @@ TEST_F(SceneFiles, LoadsATorusWithDefinesAndCsg) {
   ASSERT_NE(t, nullptr);
   EXPECT_DOUBLE_EQ(t->major(), 2);
   EXPECT_DOUBLE_EQ(t->minor(), 0.5);
-  EXPECT_EQ(t->solver(), QuarticSolver::Tianheng);
+  EXPECT_EQ(t->solver(), TorusSolver::Tianheng);
   EXPECT_TRUE(approx_equal(t->material().color, Color{1, 0.5, 0.6}));
   EXPECT_DOUBLE_EQ(t->material().specular, 0.5);
   EXPECT_DOUBLE_EQ(t->material().ambient, 0.3);
@@ -169,9 +169,9 @@ TEST_F(SceneFiles, LoadsATorusWithDefinesAndCsg) {
   EXPECT_EQ(s.camera.hsize(), 40);
 
   SceneLoadOptions o;
-  o.solver = QuarticSolver::Ferrari;
+  o.solver = TorusSolver::Ferrari;
   const Scene f = load_scene(p, o);
-  EXPECT_EQ(dynamic_cast<Torus*>(f.world.objects[0].get())->solver(), QuarticSolver::Ferrari);
+  EXPECT_EQ(dynamic_cast<Torus*>(f.world.objects[0].get())->solver(), TorusSolver::Ferrari);
 }
 
 TEST_F(SceneFiles, LoadsAPartialTorusAndASpindleChoice) {

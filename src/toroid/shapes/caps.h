@@ -1,7 +1,7 @@
 // End caps shared by the cylinder and the cone (RTC chapter 13).
 #pragma once
 
-#include "toroid/render/ray.h"
+#include "toroid/core/ray.h"
 
 namespace toroid::detail {
 

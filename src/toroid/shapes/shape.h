@@ -8,11 +8,11 @@
 
 #include "toroid/math/affine.h"
 #include "toroid/math/matrix.h"
-#include "toroid/render/intersection.h"
-#include "toroid/render/material.h"
-#include "toroid/render/shared_material.h"
-#include "toroid/render/ray.h"
-#include "toroid/shapes/bounds.h"
+#include "toroid/core/intersection.h"
+#include "toroid/core/material.h"
+#include "toroid/core/shared_material.h"
+#include "toroid/core/ray.h"
+#include "toroid/core/bounds.h"
 
 namespace toroid {
 

@@ -15,7 +15,7 @@
 #include <emmintrin.h>
 #endif
 
-#include "toroid/shapes/bounds.h"
+#include "toroid/core/bounds.h"
 #include "toroid/shapes/csg.h"
 #include "toroid/shapes/group.h"
 #include "toroid/shapes/plane.h"

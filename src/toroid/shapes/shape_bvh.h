@@ -14,9 +14,9 @@
 #include <span>
 #include <vector>
 
-#include "toroid/render/intersection.h"
-#include "toroid/render/ray.h"
-#include "toroid/shapes/bounds.h"
+#include "toroid/core/intersection.h"
+#include "toroid/core/ray.h"
+#include "toroid/core/bounds.h"
 
 namespace toroid {
 

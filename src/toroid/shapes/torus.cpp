@@ -5,7 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/intersect.h"
+#include "toroid/torus/surface.h"
 
 namespace toroid {
 

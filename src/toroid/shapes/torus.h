@@ -9,7 +9,7 @@
 #include <memory>
 #include <numbers>
 
-#include "toroid/roots/quartic.h"
+#include "toroid/torus/solver.h"
 #include "toroid/shapes/annular_cylinder.h"
 #include "toroid/shapes/primitive.h"
 
@@ -42,8 +42,8 @@ class Torus : public Primitive<Torus> {
 
   double major() const { return major_; }
   double minor() const { return minor_; }
-  void set_solver(QuarticSolver s) { solver_ = s; }
-  QuarticSolver solver() const { return solver_; }
+  void set_solver(TorusSolver s) { solver_ = s; }
+  TorusSolver solver() const { return solver_; }
 
   // Precondition: sweep.valid().
   void set_sweep(const TorusSweep& sweep);
@@ -80,7 +80,7 @@ class Torus : public Primitive<Torus> {
 
   // The one-byte fields first: they fit in the tail padding of Shape
   // (sizeof matters, scenes hold thousands of tori).
-  QuarticSolver solver_ = QuarticSolver::Default;
+  TorusSolver solver_ = TorusSolver::Default;
   SpindleSurface spindle_ = SpindleSurface::Whole;
   bool keeps_all_ = true;  // whole sweep and whole surface: no root test
   double major_, minor_;

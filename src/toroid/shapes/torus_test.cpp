@@ -15,7 +15,8 @@
 #include "toroid/shapes/cube.h"
 #include "toroid/shapes/group.h"
 #include "toroid/shapes/sphere.h"
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/intersect.h"
+#include "toroid/torus/surface.h"
 
 namespace toroid {
 namespace {
@@ -416,7 +417,9 @@ TEST(Torus, EveryKeptPointLiesInTheBoundsAndIsKept) {
           const bool inside = theta <= sw[0] && in_phi;
           SCOPED_TRACE(::testing::Message() << "r=" << minor << " theta=" << theta << " phi=" << phi);
           EXPECT_EQ(t.keeps(p), inside);
-          if (inside) EXPECT_TRUE(b.contains_point(p));
+          if (inside) {
+            EXPECT_TRUE(b.contains_point(p));
+          }
         }
     }
   }

@@ -23,66 +23,20 @@
 //  3. The origin is first moved, exactly (double-double), to the ray's point
 //     nearest the centre, so that far cameras lose nothing; t is returned
 //     relative to the original origin.
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/intersect.h"
+
+#include "toroid/math/double_double.h"
+#include "toroid/roots/monotone.h"
+#include "toroid/roots/polynomial.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 namespace toroid {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-
-// ---- Error-free transformations (Knuth's TwoSum, FMA TwoProduct).
-struct DoubleDouble {
-  double hi, lo;
-};
-
-DoubleDouble two_sum(double a, double b) {
-  const double s = a + b;
-  const double bb = s - a;
-  return {s, (a - (s - bb)) + (b - bb)};
-}
-
-// a + t * b, exactly up to ~2^-106 relative.
-DoubleDouble add_scaled(double a, double t, double b) {
-  const double p = t * b;
-  const double p_err = std::fma(t, b, -p);
-  const DoubleDouble s = two_sum(a, p);
-  const double lo = s.lo + p_err;
-  const double hi = s.hi + lo;
-  return {hi, lo - (hi - s.hi)};
-}
-
-DoubleDouble two_prod(double a, double b) {
-  const double p = a * b;
-  return {p, std::fma(a, b, -p)};
-}
-
-DoubleDouble dd_add(DoubleDouble a, DoubleDouble b) {
-  const DoubleDouble s = two_sum(a.hi, b.hi);
-  const double lo = s.lo + a.lo + b.lo;
-  const double hi = s.hi + lo;
-  return {hi, lo - (hi - s.hi)};
-}
-
-DoubleDouble dd_mul(DoubleDouble a, DoubleDouble b) {
-  DoubleDouble p = two_prod(a.hi, b.hi);
-  p.lo += a.hi * b.lo + a.lo * b.hi;
-  const double hi = p.hi + p.lo;
-  return {hi, p.lo - (hi - p.hi)};
-}
-
-DoubleDouble dd_sqrt(DoubleDouble a) {
-  if (a.hi <= 0) return {0, 0};
-  const double s = std::sqrt(a.hi);
-  const DoubleDouble s2 = two_prod(s, s);
-  const double corr = ((a.hi - s2.hi) - s2.lo + a.lo) / (2 * s);
-  const double hi = s + corr;
-  return {hi, corr - (hi - s)};
-}
 
 // A factor's value and first three derivatives at s.
 struct Sample {
@@ -150,28 +104,6 @@ class TorusFactor {
   double R_, r_, sign_;
   double dd_, c_, K_;
 };
-
-// Root of a monotone function on [lo, hi] whose values at the ends have
-// opposite signs, from the first guess x0 (inside). Newton, guarded by
-// bisection; `f` returns (value, derivative). Stops when a step is below `tol`.
-template <typename F>
-double solve_monotone(const F& f, double lo, double hi, bool lo_negative, double x0, double tol) {
-  double x = x0;
-  for (int it = 0; it < 100; ++it) {
-    const auto [v, dv] = f(x);
-    if (v == 0) return x;
-    if ((v < 0) == lo_negative)
-      lo = x;
-    else
-      hi = x;
-    double next = x - v / dv;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // also catches NaN
-    const double step = std::abs(next - x);
-    x = next;
-    if (step <= tol || hi - lo <= tol) break;
-  }
-  return x;
-}
 
 // A first guess inside (lo, hi): Halley's step from `from` if it lands
 // inside, else Newton's, else the midpoint.
@@ -460,12 +392,12 @@ void torus_quartic_coefficients(double R, double r, const double o[3], const dou
 }
 
 int intersect_torus(double major, double minor, const double origin[3], const double direction[3], double t[4],
-                    QuarticSolver solver) {
+                    TorusSolver solver) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  if (solver == QuarticSolver::Default) return solve_default(major, minor, origin, direction, -kInf, kInf, Search::All, t);
+  if (solver == TorusSolver::Default) return solve_default(major, minor, origin, direction, -kInf, kInf, Search::All, t);
   double k[5];
   torus_quartic_coefficients(major, minor, origin, direction, k);
-  const int n = solver == QuarticSolver::Ferrari ? solve_quartic_ferrari(k[0], k[1], k[2], k[3], k[4], t)
+  const int n = solver == TorusSolver::Ferrari ? solve_quartic_ferrari(k[0], k[1], k[2], k[3], k[4], t)
                                                  : solve_quartic_tianheng(k[0], k[1], k[2], k[3], k[4], t);
   sort_small(t, n);
   return n;
@@ -475,9 +407,9 @@ namespace {
 
 // The first root in (t_min, t_max), to the search's precision.
 bool first_root_in(double major, double minor, const double origin[3], const double direction[3], double t_min,
-                   double t_max, double* t, QuarticSolver solver, Search search) {
+                   double t_max, double* t, TorusSolver solver, Search search) {
   double roots[4];
-  const int n = solver == QuarticSolver::Default
+  const int n = solver == TorusSolver::Default
                     ? solve_default(major, minor, origin, direction, t_min, t_max, search, roots)
                     : intersect_torus(major, minor, origin, direction, roots, solver);
   for (int i = 0; i < n; ++i)
@@ -491,55 +423,14 @@ bool first_root_in(double major, double minor, const double origin[3], const dou
 }  // namespace
 
 bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
-                             double t_min, double t_max, double* t, QuarticSolver solver) {
+                             double t_min, double t_max, double* t, TorusSolver solver) {
   return first_root_in(major, minor, origin, direction, t_min, t_max, t, solver, Search::First);
 }
 
 bool torus_blocks(double major, double minor, const double origin[3], const double direction[3], double t_min,
-                  double t_max, QuarticSolver solver) {
+                  double t_max, TorusSolver solver) {
   double t;
   return first_root_in(major, minor, origin, direction, t_min, t_max, &t, solver, Search::Any);
-}
-
-void torus_normal(double R, double r, const double p[3], double n[3]) {
-  const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
-  if (rho == 0) {
-    // An apex of a horn or spindle torus: the surface is a cone there; take
-    // the axis direction away from the centre (up at the horn's centre).
-    n[0] = 0;
-    n[1] = 0;
-    n[2] = p[2] < 0 ? -1.0 : 1.0;
-    return;
-  }
-  // On the spindle's inner part the nearest point of the centre circle is
-  // the one across the axis: pick the factor the point satisfies best.
-  const double k = on_torus_lemon(R, r, p) ? 1 + R / rho : 1 - R / rho;
-  n[0] = k * p[0];
-  n[1] = k * p[1];
-  n[2] = p[2];
-}
-
-bool on_torus_lemon(double R, double r, const double p[3]) {
-  if (r <= R) return false;
-  const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
-  const double a_out = rho - R, a_in = rho + R;
-  const double h_out = std::abs((a_out - r) * (a_out + r) + p[2] * p[2]);
-  const double h_in = std::abs((a_in - r) * (a_in + r) + p[2] * p[2]);
-  return h_in < h_out;
-}
-
-void torus_angles(double R, double r, const double p[3], double* theta, double* phi) {
-  const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
-  // Signed distance from the axis along the direction of the tube centre.
-  const bool lemon = on_torus_lemon(R, r, p);
-  const double rho_s = lemon ? -rho : rho;
-  double th = std::atan2(p[1], p[0]);
-  constexpr double kTwoPi = 2 * std::numbers::pi;
-  if (lemon) th += std::numbers::pi;
-  if (th < 0) th += kTwoPi;
-  if (th >= kTwoPi) th -= kTwoPi;  // also catches -tiny + 2 pi rounding to 2 pi
-  *theta = th;
-  *phi = std::atan2(p[2], rho_s - R);
 }
 
 }  // namespace toroid

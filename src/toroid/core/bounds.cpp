@@ -1,4 +1,4 @@
-#include "toroid/shapes/bounds.h"
+#include "toroid/core/bounds.h"
 
 #include <algorithm>
 

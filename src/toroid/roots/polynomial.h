@@ -2,21 +2,7 @@
 // roots it finds in ascending order and returns their count.
 #pragma once
 
-#include <cstdint>
-#include <optional>
-#include <string_view>
-
 namespace toroid {
-
-// The quartic solvers that can be chosen by name (CLI --solver, YAML, API).
-enum class QuarticSolver : std::uint8_t {
-  Default,   // robust: exact distance function, monotone intervals (see torus.h)
-  Ferrari,   // textbook Ferrari with the dominant root of the resolvent cubic
-  Tianheng,  // the seed paper's closed form with its full case table
-};
-
-std::string_view solver_name(QuarticSolver s);
-std::optional<QuarticSolver> solver_from_name(std::string_view name);
 
 // a x^2 + b x + c = 0 (a may be 0).
 int solve_quadratic(double a, double b, double c, double roots[2]);

@@ -1,5 +1,5 @@
 // materials.feature: the defaults (the lighting scenarios are in lighting_test.cpp).
-#include "toroid/render/material.h"
+#include "toroid/core/material.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // bounding_boxes.CraigTreptow-rayz.feature, bounds.ShadeShiner-...feature and
 // bounds.bedis-elacheche.feature, each distinct scenario once. The group
 // scenarios are in group_test.cpp.
-#include "toroid/shapes/bounds.h"
+#include "toroid/core/bounds.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // intersections.feature: intersections and the hit (the scenarios about
 // prepare_computations and schlick are in computations_test.cpp).
-#include "toroid/render/intersection.h"
+#include "toroid/core/intersection.h"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include <atomic>
 #include <cstdint>
 
-#include "toroid/render/material.h"
+#include "toroid/core/material.h"
 
 namespace toroid {
 

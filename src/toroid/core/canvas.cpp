@@ -1,4 +1,4 @@
-#include "toroid/render/canvas.h"
+#include "toroid/core/canvas.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "toroid/math/matrix.h"
-#include "toroid/render/ray.h"
+#include "toroid/core/ray.h"
 
 namespace toroid {
 

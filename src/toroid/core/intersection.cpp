@@ -1,4 +1,4 @@
-#include "toroid/render/intersection.h"
+#include "toroid/core/intersection.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "toroid/render/shared_material.h"
+#include "toroid/core/shared_material.h"
 
 #include <utility>
 

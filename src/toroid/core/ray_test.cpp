@@ -1,5 +1,5 @@
 // rays.feature
-#include "toroid/render/ray.h"
+#include "toroid/core/ray.h"
 
 #include <gtest/gtest.h>
 

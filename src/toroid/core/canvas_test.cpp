@@ -1,5 +1,5 @@
 // canvas.feature
-#include "toroid/render/canvas.h"
+#include "toroid/core/canvas.h"
 
 #include <gtest/gtest.h>
 

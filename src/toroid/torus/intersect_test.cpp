@@ -1,5 +1,6 @@
 // intersect_torus at known roots, including the seed's special geometries.
-#include "toroid/shapes/torus_intersect.h"
+#include "toroid/torus/intersect.h"
+#include "toroid/torus/surface.h"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,7 @@ struct Roots {
 };
 
 Roots roots(double R, double r, std::array<double, 3> o, std::array<double, 3> d,
-            QuarticSolver s = QuarticSolver::Default) {
+            TorusSolver s = TorusSolver::Default) {
   Roots out{};
   out.n = intersect_torus(R, r, o.data(), d.data(), out.t, s);
   return out;
