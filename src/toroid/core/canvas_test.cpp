@@ -27,7 +27,7 @@ TEST(Canvas, CreatingACanvas) {
   EXPECT_EQ(c.width(), 10);
   EXPECT_EQ(c.height(), 20);
   for (int y = 0; y < c.height(); ++y)
-    for (int x = 0; x < c.width(); ++x) EXPECT_APPROX(c.pixel_at(x, y), Color(0, 0, 0));
+    for (int x = 0; x < c.width(); ++x) EXPECT_APPROX(c.pixel_at(x, y), (Color{0, 0, 0}));
 }
 
 TEST(Canvas, WritingPixelsToACanvas) {

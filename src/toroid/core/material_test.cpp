@@ -10,7 +10,7 @@ namespace {
 
 TEST(Materials, TheDefaultMaterial) {
   const Material m;
-  EXPECT_APPROX(m.color, Color(1, 1, 1));
+  EXPECT_APPROX(m.color, (Color{1, 1, 1}));
   EXPECT_EQ(m.ambient, 0.1);
   EXPECT_EQ(m.diffuse, 0.9);
   EXPECT_EQ(m.specular, 0.9);

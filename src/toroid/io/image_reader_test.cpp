@@ -54,7 +54,7 @@ TEST(CanvasFromPpm, ReadingPixelDataFromAPpmFile) {
     SCOPED_TRACE(::testing::Message() << "pixel " << e.x << ", " << e.y);
     EXPECT_TRUE(approx_equal(canvas.pixel_at(e.x, e.y), e.color, kPrinted3)) << canvas.pixel_at(e.x, e.y);
   }
-  EXPECT_APPROX(canvas.pixel_at(0, 0), Color(1, 127 / 255.0, 0));  // exactly value / maxval
+  EXPECT_APPROX(canvas.pixel_at(0, 0), (Color{1, 127 / 255.0, 0}));  // exactly value / maxval
 }
 
 TEST(CanvasFromPpm, PpmParsingIgnoresCommentLines) {
@@ -68,18 +68,18 @@ TEST(CanvasFromPpm, PpmParsingIgnoresCommentLines) {
       "255 255 255\n"
       "# oh, no, comments in the pixel data!\n"
       "255 0 255\n");
-  EXPECT_APPROX(canvas.pixel_at(0, 0), Color(1, 1, 1));
-  EXPECT_APPROX(canvas.pixel_at(1, 0), Color(1, 0, 1));
+  EXPECT_APPROX(canvas.pixel_at(0, 0), (Color{1, 1, 1}));
+  EXPECT_APPROX(canvas.pixel_at(1, 0), (Color{1, 0, 1}));
 }
 
 TEST(CanvasFromPpm, PpmParsingAllowsAnRgbTripleToSpanLines) {
   const Canvas canvas = canvas_from_ppm("P3\n1 1\n255\n51\n153\n\n204\n");
-  EXPECT_APPROX(canvas.pixel_at(0, 0), Color(0.2, 0.6, 0.8));
+  EXPECT_APPROX(canvas.pixel_at(0, 0), (Color{0.2, 0.6, 0.8}));
 }
 
 TEST(CanvasFromPpm, PpmParsingRespectsTheScaleSetting) {
   const Canvas canvas = canvas_from_ppm("P3\n2 2\n100\n100 100 100  50 50 50\n75 50 25  0 0 0\n");
-  EXPECT_APPROX(canvas.pixel_at(0, 1), Color(0.75, 0.5, 0.25));
+  EXPECT_APPROX(canvas.pixel_at(0, 1), (Color{0.75, 0.5, 0.25}));
 }
 
 // Beyond the book ------------------------------------------------------------
@@ -87,13 +87,13 @@ TEST(CanvasFromPpm, PpmParsingRespectsTheScaleSetting) {
 TEST(CanvasFromPpm, RawP6WithOneAndTwoBytesPerSample) {
   const std::string p6 = std::string("P6\n# raw\n2 1\n255\n") + std::string("\xff\x00\x80\x00\x33\xff", 6);
   const Canvas c = canvas_from_ppm(p6);
-  EXPECT_APPROX(c.pixel_at(0, 0), Color(1, 0, 128 / 255.0));
-  EXPECT_APPROX(c.pixel_at(1, 0), Color(0, 51 / 255.0, 1));
+  EXPECT_APPROX(c.pixel_at(0, 0), (Color{1, 0, 128 / 255.0}));
+  EXPECT_APPROX(c.pixel_at(1, 0), (Color{0, 51 / 255.0, 1}));
   // maxval > 255: big-endian pairs. A raw byte that looks like '#' or a
   // newline is data, not a comment or a line break.
   const std::string p6_16 = std::string("P6 1 1 1000\n") + std::string("\x03\xe8\x00\x23\x01\x0a", 6);
   const Canvas d = canvas_from_ppm(p6_16);
-  EXPECT_APPROX(d.pixel_at(0, 0), Color(1, 0.035, 0.266));
+  EXPECT_APPROX(d.pixel_at(0, 0), (Color{1, 0.035, 0.266}));
 }
 
 TEST(CanvasFromPpm, ReadsBackWhatCanvasToPpmWrites) {
@@ -169,8 +169,8 @@ TEST(ReadImage, PngAndPpmFilesReadBackWhatWriteImageWrote) {
         const Color want = c.pixel_at(x, y), got = back.pixel_at(x, y);
         // PNG: the sRGB code written decodes to the exact code's value.
         if (std::string(name) == "c.png") {
-          EXPECT_APPROX(got, Color(srgb8_to_linear(linear_to_srgb8(want.r)), srgb8_to_linear(linear_to_srgb8(want.g)),
-                                   srgb8_to_linear(linear_to_srgb8(want.b))));
+          EXPECT_APPROX(got, (Color{srgb8_to_linear(linear_to_srgb8(want.r)), srgb8_to_linear(linear_to_srgb8(want.g)),
+                                   srgb8_to_linear(linear_to_srgb8(want.b))}));
         }
         EXPECT_TRUE(approx_equal(got, want, 0.01)) << x << ", " << y << ": " << got;
       }

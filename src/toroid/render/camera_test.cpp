@@ -66,12 +66,12 @@ TEST(Camera, RenderingAWorldWithACamera) {
   const Tuple up = vector(0, 1, 0);
   c.set_transform(view_transform(from, to, up));
   const Canvas image = render(c, w);
-  EXPECT_APPROX(image.pixel_at(5, 5), Color(0.38066, 0.47583, 0.2855));
+  EXPECT_APPROX(image.pixel_at(5, 5), (Color{0.38066, 0.47583, 0.2855}));
 }
 
 // Beyond the book.
 
-TEST(CameraExtra, SubPixelOffsetsMoveTheRayWithinThePixel) {
+TEST(CameraSubPixel, SubPixelOffsetsMoveTheRayWithinThePixel) {
   const Camera c(201, 101, kPi / 2);
   // The centre offsets give the book's ray; the pixel's top-left corner is
   // the bottom-right corner of the pixel before it, diagonally.

@@ -100,7 +100,7 @@ TEST(Lights, FindingASinglePointOnAJitteredAreaLight) {
 }
 
 // Beyond the feature: the renderer's jitter.
-TEST(LightsExtra, JitteredSamplesStayInTheirCellsAndDependOnlyOnThePoint) {
+TEST(AreaLights, JitteredSamplesStayInTheirCellsAndDependOnlyOnThePoint) {
   AreaLight light = book_area_light();
   light.jitter = true;
   const std::uint64_t key = light.jitter_key(point(0.3, 2, -1));
@@ -125,7 +125,7 @@ TEST(LightsExtra, JitteredSamplesStayInTheirCellsAndDependOnlyOnThePoint) {
   EXPECT_APPROX(light.sample(light.jitter_key(point(0.3, 2, -1)), 3, 1), point(1.75, 0, 0.75));
 }
 
-TEST(LightsExtra, AnAreaLightWhollyBehindASurfaceLightsNothing) {
+TEST(AreaLights, AnAreaLightWhollyBehindASurfaceLightsNothing) {
   const AreaLight light(point(-0.5, -0.5, -5), vector(1, 0, 0), 2, vector(0, 1, 0), 2, Color{1, 1, 1});
   EXPECT_TRUE(light.in_front_of(point(0, 0, 0), vector(0, 0, -1)));
   EXPECT_FALSE(light.in_front_of(point(0, 0, 0), vector(0, 0, 1)));

@@ -30,7 +30,7 @@ TEST(Materials, LightingWithTheEyeBetweenTheLightAndTheSurface) {
   const Tuple eyev = vector(0, 0, -1);
   const Tuple normalv = vector(0, 0, -1);
   const PointLight light{point(0, 0, -10), Color{1, 1, 1}};
-  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv), Color(1.9, 1.9, 1.9));
+  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv), (Color{1.9, 1.9, 1.9}));
 }
 
 TEST(Materials, LightingWithTheEyeBetweenLightAndSurfaceEyeOffset45Degrees) {
@@ -38,7 +38,7 @@ TEST(Materials, LightingWithTheEyeBetweenLightAndSurfaceEyeOffset45Degrees) {
   const Tuple eyev = vector(0, kHalfSqrt2, -kHalfSqrt2);
   const Tuple normalv = vector(0, 0, -1);
   const PointLight light{point(0, 0, -10), Color{1, 1, 1}};
-  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv), Color(1.0, 1.0, 1.0));
+  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv), (Color{1.0, 1.0, 1.0}));
 }
 
 TEST(Materials, LightingWithEyeOppositeSurfaceLightOffset45Degrees) {
@@ -46,7 +46,7 @@ TEST(Materials, LightingWithEyeOppositeSurfaceLightOffset45Degrees) {
   const Tuple eyev = vector(0, 0, -1);
   const Tuple normalv = vector(0, 0, -1);
   const PointLight light{point(0, 10, -10), Color{1, 1, 1}};
-  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv), Color(0.7364, 0.7364, 0.7364));
+  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv), (Color{0.7364, 0.7364, 0.7364}));
 }
 
 TEST(Materials, LightingWithEyeInThePathOfTheReflectionVector) {
@@ -54,7 +54,7 @@ TEST(Materials, LightingWithEyeInThePathOfTheReflectionVector) {
   const Tuple eyev = vector(0, -kHalfSqrt2, -kHalfSqrt2);
   const Tuple normalv = vector(0, 0, -1);
   const PointLight light{point(0, 10, -10), Color{1, 1, 1}};
-  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv), Color(1.6364, 1.6364, 1.6364));
+  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv), (Color{1.6364, 1.6364, 1.6364}));
 }
 
 TEST(Materials, LightingWithTheLightBehindTheSurface) {
@@ -62,7 +62,7 @@ TEST(Materials, LightingWithTheLightBehindTheSurface) {
   const Tuple eyev = vector(0, 0, -1);
   const Tuple normalv = vector(0, 0, -1);
   const PointLight light{point(0, 0, 10), Color{1, 1, 1}};
-  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv), Color(0.1, 0.1, 0.1));
+  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv), (Color{0.1, 0.1, 0.1}));
 }
 
 TEST(Materials, LightingWithTheSurfaceInShadow) {
@@ -71,7 +71,7 @@ TEST(Materials, LightingWithTheSurfaceInShadow) {
   const Tuple normalv = vector(0, 0, -1);
   const PointLight light{point(0, 0, -10), Color{1, 1, 1}};
   const bool in_shadow = true;
-  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv, in_shadow), Color(0.1, 0.1, 0.1));
+  EXPECT_APPROX(lighting(m, object, light, position, eyev, normalv, in_shadow), (Color{0.1, 0.1, 0.1}));
 }
 
 TEST(Materials, LightingWithAPatternApplied) {
@@ -87,8 +87,8 @@ TEST(Materials, LightingWithAPatternApplied) {
   const PointLight light{point(0, 0, -10), Color{1, 1, 1}};
   const Color c1 = lighting(m, object, light, point(0.9, 0, 0), eyev, normalv, false);
   const Color c2 = lighting(m, object, light, point(1.1, 0, 0), eyev, normalv, false);
-  EXPECT_APPROX(c1, Color(1, 1, 1));
-  EXPECT_APPROX(c2, Color(0, 0, 0));
+  EXPECT_APPROX(c1, (Color{1, 1, 1}));
+  EXPECT_APPROX(c2, (Color{0, 0, 0}));
 }
 
 // The soft-shadows bonus chapter's materials scenarios (from the book's
@@ -116,7 +116,7 @@ TEST(Materials, LightingUsesLightIntensityToAttenuateColor) {
   const struct {
     double intensity;
     Color result;
-  } examples[] = {{1.0, Color(1, 1, 1)}, {0.5, Color(0.55, 0.55, 0.55)}, {0.0, Color(0.1, 0.1, 0.1)}};
+  } examples[] = {{1.0, Color{1, 1, 1}}, {0.5, Color{0.55, 0.55, 0.55}}, {0.0, Color{0.1, 0.1, 0.1}}};
   for (const auto& e : examples) {
     SCOPED_TRACE(e.intensity);
     EXPECT_APPROX(lighting(shape.material(), shape, w.lights[0], pt, eyev, normalv, e.intensity), e.result);
@@ -131,8 +131,8 @@ TEST(Materials, LightingSamplesTheAreaLight) {
   const struct {
     Tuple pt;
     Color result;
-  } examples[] = {{point(0, 0, -1), Color(0.9965, 0.9965, 0.9965)},
-                  {point(0, 0.7071, -0.7071), Color(0.6232, 0.6232, 0.6232)}};
+  } examples[] = {{point(0, 0, -1), Color{0.9965, 0.9965, 0.9965}},
+                  {point(0, 0.7071, -0.7071), Color{0.6232, 0.6232, 0.6232}}};
   // The book prints four decimals: the exact values are 0.996505 and
   // 0.623183 (0.1 + 0.9 x the mean cosine to the four cell centres), so the
   // comparison is at the printed precision, 1e-4.

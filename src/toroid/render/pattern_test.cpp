@@ -92,14 +92,14 @@ TEST(Patterns, APatternWithAnObjectTransformation) {
   Sphere shape;
   shape.set_transform(scaling(2, 2, 2));
   const TestPattern pattern;
-  EXPECT_APPROX(pattern.pattern_at_shape(shape, point(2, 3, 4)), Color(1, 1.5, 2));
+  EXPECT_APPROX(pattern.pattern_at_shape(shape, point(2, 3, 4)), (Color{1, 1.5, 2}));
 }
 
 TEST(Patterns, APatternWithAPatternTransformation) {
   const Sphere shape;
   TestPattern pattern;
   pattern.set_transform(scaling(2, 2, 2));
-  EXPECT_APPROX(pattern.pattern_at_shape(shape, point(2, 3, 4)), Color(1, 1.5, 2));
+  EXPECT_APPROX(pattern.pattern_at_shape(shape, point(2, 3, 4)), (Color{1, 1.5, 2}));
 }
 
 TEST(Patterns, APatternWithBothAnObjectAndAPatternTransformation) {
@@ -107,15 +107,15 @@ TEST(Patterns, APatternWithBothAnObjectAndAPatternTransformation) {
   shape.set_transform(scaling(2, 2, 2));
   TestPattern pattern;
   pattern.set_transform(translation(0.5, 1, 1.5));
-  EXPECT_APPROX(pattern.pattern_at_shape(shape, point(2.5, 3, 3.5)), Color(0.75, 0.5, 0.25));
+  EXPECT_APPROX(pattern.pattern_at_shape(shape, point(2.5, 3, 3.5)), (Color{0.75, 0.5, 0.25}));
 }
 
 TEST(Patterns, AGradientLinearlyInterpolatesBetweenColors) {
   const GradientPattern pattern(white, black);
   EXPECT_APPROX(pattern.pattern_at(point(0, 0, 0)), white);
-  EXPECT_APPROX(pattern.pattern_at(point(0.25, 0, 0)), Color(0.75, 0.75, 0.75));
-  EXPECT_APPROX(pattern.pattern_at(point(0.5, 0, 0)), Color(0.5, 0.5, 0.5));
-  EXPECT_APPROX(pattern.pattern_at(point(0.75, 0, 0)), Color(0.25, 0.25, 0.25));
+  EXPECT_APPROX(pattern.pattern_at(point(0.25, 0, 0)), (Color{0.75, 0.75, 0.75}));
+  EXPECT_APPROX(pattern.pattern_at(point(0.5, 0, 0)), (Color{0.5, 0.5, 0.5}));
+  EXPECT_APPROX(pattern.pattern_at(point(0.75, 0, 0)), (Color{0.25, 0.25, 0.25}));
 }
 
 TEST(Patterns, ARingShouldExtendInBothXAndZ) {
@@ -150,7 +150,7 @@ TEST(Patterns, CheckersShouldRepeatInZ) {
 
 // Beyond the book.
 
-TEST(PatternsExtra, StripesAlternateFarFromTheOriginAndBeyondWholeNumbers) {
+TEST(PatternPrecision, StripesAlternateFarFromTheOriginAndBeyondWholeNumbers) {
   // Whole numbers below 2^52 are told even or odd by an integer test, larger
   // ones by fmod: both must agree with fmod(floor(x), 2) == 0.
   const StripePattern pattern(white, black);
@@ -165,7 +165,7 @@ TEST(PatternsExtra, StripesAlternateFarFromTheOriginAndBeyondWholeNumbers) {
   EXPECT_APPROX(pattern.pattern_at(point(std::nan(""), 0, 0)), black);
 }
 
-TEST(PatternsExtra, CheckersDoNotSpeckleOnAPlaneAtYZero) {
+TEST(PatternPrecision, CheckersDoNotSpeckleOnAPlaneAtYZero) {
   // Points on y = 0 carry rounding noise of either sign; all must be white.
   const CheckersPattern pattern(white, black);
   for (const double y : {0.0, -0.0, 1e-15, -1e-15, -1e-12})
@@ -173,21 +173,21 @@ TEST(PatternsExtra, CheckersDoNotSpeckleOnAPlaneAtYZero) {
   EXPECT_APPROX(pattern.pattern_at(point(0.5, -0.01, 0.5)), black);
 }
 
-TEST(PatternsExtra, ABlendedPatternAveragesItsPatternsEachThroughItsOwnTransform) {
+TEST(PatternTransforms, ABlendedPatternAveragesItsPatternsEachThroughItsOwnTransform) {
   auto stripes_x = std::make_shared<StripePattern>(white, black);
   auto stripes_z = std::make_shared<StripePattern>(white, black);
   stripes_z->set_transform(rotation_y(-std::numbers::pi / 2));  // stripes across z
   const BlendedPattern blended(stripes_x, stripes_z);
   EXPECT_APPROX(blended.pattern_at(point(0.5, 0, 0.5)), white);
-  EXPECT_APPROX(blended.pattern_at(point(1.5, 0, 0.5)), Color(0.5, 0.5, 0.5));
+  EXPECT_APPROX(blended.pattern_at(point(1.5, 0, 0.5)), (Color{0.5, 0.5, 0.5}));
   EXPECT_APPROX(blended.pattern_at(point(1.5, 0, 1.5)), black);
 }
 
-TEST(PatternsExtra, APatternOnAPlaneFollowsThePlanesTransform) {
+TEST(PatternTransforms, APatternOnAPlaneFollowsThePlanesTransform) {
   Plane plane;
   plane.set_transform(translation(0, 1, 0));
   const TestPattern pattern;
-  EXPECT_APPROX(pattern.pattern_at_shape(plane, point(2, 1, 3)), Color(2, 0, 3));
+  EXPECT_APPROX(pattern.pattern_at_shape(plane, point(2, 1, 3)), (Color{2, 0, 3}));
 }
 
 }  // namespace

@@ -52,10 +52,10 @@ TEST(UvPatterns, CheckerPatternIn2DFromAnImage) {
       "8 8 8  9 9 9  0 0 0  1 1 1  2 2 2  3 3 3  4 4 4  5 5 5  6 6 6  7 7 7\n"
       "9 9 9  0 0 0  1 1 1  2 2 2  3 3 3  4 4 4  5 5 5  6 6 6  7 7 7  8 8 8\n";
   const UvImage pattern(std::make_shared<const Canvas>(canvas_from_ppm(ppm)));
-  EXPECT_APPROX(pattern.uv_pattern_at(0, 0), Color(0.9, 0.9, 0.9));
-  EXPECT_APPROX(pattern.uv_pattern_at(0.3, 0), Color(0.2, 0.2, 0.2));
-  EXPECT_APPROX(pattern.uv_pattern_at(0.6, 0.3), Color(0.1, 0.1, 0.1));
-  EXPECT_APPROX(pattern.uv_pattern_at(1, 1), Color(0.9, 0.9, 0.9));
+  EXPECT_APPROX(pattern.uv_pattern_at(0, 0), (Color{0.9, 0.9, 0.9}));
+  EXPECT_APPROX(pattern.uv_pattern_at(0.3, 0), (Color{0.2, 0.2, 0.2}));
+  EXPECT_APPROX(pattern.uv_pattern_at(0.6, 0.3), (Color{0.1, 0.1, 0.1}));
+  EXPECT_APPROX(pattern.uv_pattern_at(1, 1), (Color{0.9, 0.9, 0.9}));
 }
 
 // Beyond the book: a (u, v) a hair outside [0, 1], or NaN from a degenerate
@@ -67,10 +67,10 @@ TEST(UvPatterns, AnImageClampsCoordinatesOutsideTheUnitSquare) {
   canvas->write_pixel(0, 1, Color{0, 0, 1});  // bottom left
   canvas->write_pixel(1, 1, Color{1, 1, 1});  // bottom right
   const UvImage pattern(canvas);
-  EXPECT_APPROX(pattern.uv_pattern_at(-0.5, 2.0), Color(1, 0, 0));
-  EXPECT_APPROX(pattern.uv_pattern_at(1.5, 1.5), Color(0, 1, 0));
-  EXPECT_APPROX(pattern.uv_pattern_at(-1e-12, -3), Color(0, 0, 1));
-  EXPECT_APPROX(pattern.uv_pattern_at(std::nan(""), std::nan("")), Color(1, 0, 0));
+  EXPECT_APPROX(pattern.uv_pattern_at(-0.5, 2.0), (Color{1, 0, 0}));
+  EXPECT_APPROX(pattern.uv_pattern_at(1.5, 1.5), (Color{0, 1, 0}));
+  EXPECT_APPROX(pattern.uv_pattern_at(-1e-12, -3), (Color{0, 0, 1}));
+  EXPECT_APPROX(pattern.uv_pattern_at(std::nan(""), std::nan("")), (Color{1, 0, 0}));
 }
 
 }  // namespace

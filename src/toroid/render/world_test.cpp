@@ -101,7 +101,7 @@ TEST(World, ShadingAnIntersection) {
   const Shape* shape = w.objects[0].get();
   const Intersection i{4, shape};
   const Computations comps = prepare_computations(i, r);
-  EXPECT_APPROX(shade_hit(w, comps), Color(0.38066, 0.47583, 0.2855));
+  EXPECT_APPROX(shade_hit(w, comps), (Color{0.38066, 0.47583, 0.2855}));
 }
 
 TEST(World, ShadingAnIntersectionFromTheInside) {
@@ -111,19 +111,19 @@ TEST(World, ShadingAnIntersectionFromTheInside) {
   const Shape* shape = w.objects[1].get();
   const Intersection i{0.5, shape};
   const Computations comps = prepare_computations(i, r);
-  EXPECT_APPROX(shade_hit(w, comps), Color(0.90498, 0.90498, 0.90498));
+  EXPECT_APPROX(shade_hit(w, comps), (Color{0.90498, 0.90498, 0.90498}));
 }
 
 TEST(World, TheColorWhenARayMisses) {
   const World w = default_world();
   const Ray r{point(0, 0, -5), vector(0, 1, 0)};
-  EXPECT_APPROX(color_at(w, r), Color(0, 0, 0));
+  EXPECT_APPROX(color_at(w, r), (Color{0, 0, 0}));
 }
 
 TEST(World, TheColorWhenARayHits) {
   const World w = default_world();
   const Ray r{point(0, 0, -5), vector(0, 0, 1)};
-  EXPECT_APPROX(color_at(w, r), Color(0.38066, 0.47583, 0.2855));
+  EXPECT_APPROX(color_at(w, r), (Color{0.38066, 0.47583, 0.2855}));
 }
 
 TEST(World, TheColorWithAnIntersectionBehindTheRay) {
@@ -175,7 +175,7 @@ TEST(World, ShadeHitIsGivenAnIntersectionInShadow) {
   const Ray r{point(0, 0, 5), vector(0, 0, 1)};
   const Intersection i{4, s2.get()};
   const Computations comps = prepare_computations(i, r);
-  EXPECT_APPROX(shade_hit(w, comps), Color(0.1, 0.1, 0.1));
+  EXPECT_APPROX(shade_hit(w, comps), (Color{0.1, 0.1, 0.1}));
 }
 
 TEST(World, TheReflectedColorForANonreflectiveMaterial) {
@@ -187,7 +187,7 @@ TEST(World, TheReflectedColorForANonreflectiveMaterial) {
   shape.set_material(shape_material);
   const Intersection i{1, &shape};
   const Computations comps = prepare_computations(i, r);
-  EXPECT_APPROX(reflected_color(w, comps), Color(0, 0, 0));
+  EXPECT_APPROX(reflected_color(w, comps), (Color{0, 0, 0}));
 }
 
 TEST(World, TheReflectedColorForAReflectiveMaterial) {
@@ -246,7 +246,7 @@ TEST(World, TheReflectedColorAtTheMaximumRecursiveDepth) {
   const Ray r{point(0, 0, -3), vector(0, -kHalfSqrt2, kHalfSqrt2)};
   const Intersection i{std::sqrt(2.0), shape.get()};
   const Computations comps = prepare_computations(i, r);
-  EXPECT_APPROX(reflected_color(w, comps, 0), Color(0, 0, 0));
+  EXPECT_APPROX(reflected_color(w, comps, 0), (Color{0, 0, 0}));
 }
 
 TEST(World, TheRefractedColorWithAnOpaqueSurface) {
@@ -255,7 +255,7 @@ TEST(World, TheRefractedColorWithAnOpaqueSurface) {
   const Ray r{point(0, 0, -5), vector(0, 0, 1)};
   const Intersections xs{{4, shape}, {6, shape}};
   const Computations comps = prepare_computations(xs[0], r, xs);
-  EXPECT_APPROX(refracted_color(w, comps, 5), Color(0, 0, 0));
+  EXPECT_APPROX(refracted_color(w, comps, 5), (Color{0, 0, 0}));
 }
 
 TEST(World, TheRefractedColorAtTheMaximumRecursiveDepth) {
@@ -268,7 +268,7 @@ TEST(World, TheRefractedColorAtTheMaximumRecursiveDepth) {
   const Ray r{point(0, 0, -5), vector(0, 0, 1)};
   const Intersections xs{{4, &shape}, {6, &shape}};
   const Computations comps = prepare_computations(xs[0], r, xs);
-  EXPECT_APPROX(refracted_color(w, comps, 0), Color(0, 0, 0));
+  EXPECT_APPROX(refracted_color(w, comps, 0), (Color{0, 0, 0}));
 }
 
 TEST(World, TheRefractedColorUnderTotalInternalReflection) {
@@ -282,7 +282,7 @@ TEST(World, TheRefractedColorUnderTotalInternalReflection) {
   const Intersections xs{{-kHalfSqrt2, &shape}, {kHalfSqrt2, &shape}};
   // Inside the sphere: the hit is xs[1], not xs[0].
   const Computations comps = prepare_computations(xs[1], r, xs);
-  EXPECT_APPROX(refracted_color(w, comps, 5), Color(0, 0, 0));
+  EXPECT_APPROX(refracted_color(w, comps, 5), (Color{0, 0, 0}));
 }
 
 TEST(World, TheRefractedColorWithARefractedRay) {
@@ -320,7 +320,7 @@ TEST(World, ShadeHitWithATransparentMaterial) {
   const Ray r{point(0, 0, -3), vector(0, -kHalfSqrt2, kHalfSqrt2)};
   const Intersections xs{{std::sqrt(2.0), floor.get()}};
   const Computations comps = prepare_computations(xs[0], r, xs);
-  EXPECT_APPROX(shade_hit(w, comps, 5), Color(0.93642, 0.68642, 0.68642));
+  EXPECT_APPROX(shade_hit(w, comps, 5), (Color{0.93642, 0.68642, 0.68642}));
 }
 
 TEST(World, ShadeHitWithAReflectiveTransparentMaterial) {
@@ -341,7 +341,7 @@ TEST(World, ShadeHitWithAReflectiveTransparentMaterial) {
   w.objects.push_back(ball);
   const Intersections xs{{std::sqrt(2.0), floor.get()}};
   const Computations comps = prepare_computations(xs[0], r, xs);
-  EXPECT_APPROX(shade_hit(w, comps, 5), Color(0.93391, 0.69643, 0.69243));
+  EXPECT_APPROX(shade_hit(w, comps, 5), (Color{0.93391, 0.69643, 0.69243}));
 }
 
 // The soft-shadows bonus chapter (from the book's bonus chapter; not in the
@@ -378,7 +378,7 @@ World soft_shadow_world(bool jitter) {
   return w;
 }
 
-TEST(WorldExtra, AnAreaLightCastsAnUmbraAndAPenumbra) {
+TEST(WorldLighting, AnAreaLightCastsAnUmbraAndAPenumbra) {
   for (const bool jitter : {false, true}) {
     SCOPED_TRACE(jitter);
     const World w = soft_shadow_world(jitter);
@@ -412,7 +412,7 @@ TEST(WorldExtra, AnAreaLightCastsAnUmbraAndAPenumbra) {
   }
 }
 
-TEST(WorldExtra, AOneCellAreaLightShadesLikeAPointLightAtItsCentre) {
+TEST(WorldLighting, AOneCellAreaLightShadesLikeAPointLightAtItsCentre) {
   World area = default_world(), point_lit = default_world();
   area.lights.clear();
   area.area_lights.emplace_back(point(-11, 9, -10), vector(2, 0, 0), 1, vector(0, 2, 0), 1, Color{1, 1, 1});
@@ -423,7 +423,7 @@ TEST(WorldExtra, AOneCellAreaLightShadesLikeAPointLightAtItsCentre) {
   }
 }
 
-TEST(WorldExtra, AnAreaLightBehindTheSurfaceCostsNoShadowRays) {
+TEST(WorldLighting, AnAreaLightBehindTheSurfaceCostsNoShadowRays) {
   World w = soft_shadow_world(false);
   const Ray up{point(0.3, -2, 0.2), vector(0, 1, 0)};  // hits the floor from below
   const std::uint64_t before = rays_traced_on_this_thread();
@@ -432,7 +432,7 @@ TEST(WorldExtra, AnAreaLightBehindTheSurfaceCostsNoShadowRays) {
   EXPECT_APPROX(c, Material{}.color * Material{}.ambient);
 }
 
-TEST(WorldExtra, ShapesThatCastNoShadowAreSkippedByShadowRays) {
+TEST(WorldLighting, ShapesThatCastNoShadowAreSkippedByShadowRays) {
   World w = default_world();
   const Tuple p = point(10, -10, 10);
   ASSERT_TRUE(is_shadowed(w, p, w.lights[0]));
@@ -440,7 +440,7 @@ TEST(WorldExtra, ShapesThatCastNoShadowAreSkippedByShadowRays) {
   EXPECT_FALSE(is_shadowed(w, p, w.lights[0]));
 }
 
-TEST(WorldExtra, TheContributionsOfSeveralLightsAddUp) {
+TEST(WorldLighting, TheContributionsOfSeveralLightsAddUp) {
   World w = default_world();
   const Ray r{point(0, 0, -5), vector(0, 0, 1)};
   const Color one = color_at(w, r);

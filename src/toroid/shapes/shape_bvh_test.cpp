@@ -8,8 +8,8 @@
 #include <random>
 #include <span>
 
+#include "support/scattered_shapes.h"
 #include "toroid/math/transform.h"
-#include "toroid/render/computations.h"
 #include "toroid/shapes/group.h"
 #include "toroid/shapes/plane.h"
 #include "toroid/shapes/sphere.h"
@@ -19,59 +19,6 @@ namespace toroid {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Spheres and tori scattered in a 20-unit cube, one group, three planes.
-std::vector<std::shared_ptr<Shape>> scattered_shapes() {
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> pos(-10, 10), angle(0, 6.283), size(0.2, 1.0);
-  std::vector<std::shared_ptr<Shape>> shapes;
-  for (int i = 0; i < 120; ++i) {
-    std::shared_ptr<Shape> s;
-    if (i % 2 == 0) s = std::make_shared<Sphere>();
-    else s = std::make_shared<Torus>(1.0, 0.3);
-    const double k = size(rng);
-    s->set_transform(translation(pos(rng), pos(rng), pos(rng)) * rotation_y(angle(rng)) * rotation_x(angle(rng)) *
-                     scaling(k, k, k));
-    if (i % 7 == 0) s->casts_shadow = false;
-    shapes.push_back(s);
-  }
-  auto g = std::make_shared<Group>();
-  g->add_child(std::make_shared<Sphere>());
-  g->set_transform(translation(0, 0, 12));
-  shapes.push_back(g);
-  // Planes, tested apart from the hierarchy by their height alone: one
-  // level, one tilted and scaled, one tilted that casts no shadow.
-  auto p = std::make_shared<Plane>();
-  p->set_transform(translation(0, -11, 0));
-  shapes.push_back(p);
-  auto tilted = std::make_shared<Plane>();
-  tilted->set_transform(translation(3, 12, -1) * rotation_z(0.4) * rotation_x(0.3) * scaling(2, 0.5, 3));
-  shapes.push_back(tilted);
-  auto clear = std::make_shared<Plane>();
-  clear->set_transform(translation(0, 0, 13) * rotation_x(1.2));
-  clear->casts_shadow = false;
-  shapes.push_back(clear);
-  return shapes;
-}
-
-std::vector<Ray> random_rays(int n) {
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> pos(-14, 14), dir(-1, 1);
-  std::vector<Ray> rays;
-  for (int i = 0; i < n; ++i) {
-    const Tuple d = normalize(vector(dir(rng), dir(rng), dir(rng)));
-    rays.push_back({point(pos(rng), pos(rng), pos(rng)), d});
-  }
-  return rays;
-}
-
-// The book's list: every intersection of every shape along the ray's line.
-Intersections line_intersections(const std::vector<std::shared_ptr<Shape>>& shapes, const Ray& ray) {
-  Intersections all;
-  for (const auto& s : shapes) s->intersect(ray, all);
-  sort_intersections(all);
-  return all;
-}
 
 // The nearest hit by asking every shape in turn.
 bool nearest_of_every_shape(const std::vector<std::shared_ptr<Shape>>& shapes, const Ray& ray, Intersection& hit) {
@@ -226,40 +173,6 @@ TEST(ShapeBvh, UpToTheHitNamesTheNearestHitInItsListWhetherItRefractsOrNot) {
   EXPECT_GT(refracting, 100);
   EXPECT_GT(opaque, 100);
   EXPECT_GT(on_planes, 100);
-}
-
-TEST(ShapeBvh, ListUpToTheHitGivesTheContainersOfTheWholeLine) {
-  // Glass spheres, tori (closed surfaces, some overlapping) and planes
-  // (each one toggles the containers): n1 and n2 from the index's list are
-  // those of the book's list of every intersection along the line.
-  auto shapes = scattered_shapes();
-  shapes.erase(shapes.end() - 4);  // no group
-  for (std::size_t i = 0; i < shapes.size(); ++i) {
-    Material glass;
-    glass.transparency = 0.9;
-    glass.refractive_index = 1.1 + 0.01 * static_cast<double>(i);
-    shapes[i]->set_material(glass);
-  }
-  const ShapeBvh bvh(shapes);
-  Intersections got;
-  int compared = 0;
-  for (const Ray& ray : random_rays(12000)) {
-    const Intersections all = line_intersections(shapes, ray);
-    const Intersection* h = hit(all);
-    if (!h) continue;
-    bvh.intersect_up_to_hit(ray, got);
-    std::erase_if(got, [&h](const Intersection& x) { return x.t > h->t; });
-    sort_intersections(got);
-    const Intersection* g = hit(got);
-    ASSERT_TRUE(g);
-    ASSERT_EQ(g->t, h->t);
-    const Computations want = prepare_computations(*h, ray, all);
-    const Computations have = prepare_computations(*g, ray, got);
-    EXPECT_EQ(have.n1, want.n1);
-    EXPECT_EQ(have.n2, want.n2);
-    ++compared;
-  }
-  EXPECT_GT(compared, 1000);
 }
 
 TEST(ShapeBvh, KnowsWhetherSomethingBelowRefracts) {

@@ -4,22 +4,10 @@
 #include <gtest/gtest.h>
 
 #include "support/approx.h"
-#include "toroid/render/computations.h"
+#include "support/smooth_triangle_background.h"
 
 namespace toroid {
 namespace {
-
-// The feature's Background.
-class SmoothTriangles : public ::testing::Test {
- protected:
-  const Tuple p1 = point(0, 1, 0);
-  const Tuple p2 = point(-1, 0, 0);
-  const Tuple p3 = point(1, 0, 0);
-  const Tuple n1 = vector(0, 1, 0);
-  const Tuple n2 = vector(-1, 0, 0);
-  const Tuple n3 = vector(1, 0, 0);
-  const SmoothTriangle tri{p1, p2, p3, n1, n2, n3};
-};
 
 TEST_F(SmoothTriangles, ConstructingASmoothTriangle) {
   EXPECT_APPROX(tri.p1(), p1);
@@ -41,14 +29,6 @@ TEST_F(SmoothTriangles, AnIntersectionWithASmoothTriangleStoresUV) {
 TEST_F(SmoothTriangles, ASmoothTriangleUsesUVToInterpolateTheNormal) {
   const Intersection i{1, &tri, 0.45, 0.25};
   EXPECT_APPROX(tri.normal_at(point(0, 0, 0), i), vector(-0.5547, 0.83205, 0));
-}
-
-TEST_F(SmoothTriangles, PreparingTheNormalOnASmoothTriangle) {
-  const Intersection i{1, &tri, 0.45, 0.25};
-  const Ray r{point(-0.2, 0.3, -2), vector(0, 0, 1)};
-  const Intersections xs{i};
-  const Computations comps = prepare_computations(i, r, xs);
-  EXPECT_APPROX(comps.normalv, vector(-0.5547, 0.83205, 0));
 }
 
 }  // namespace
