@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Memory per torus (issue 6): peak RSS of `toroid render` (8x8 pixels) on
+# Memory per torus: peak RSS of `toroid render` (8x8 pixels) on
 # scenes of 1 and 10,001 tori, and the heap a loaded scene keeps per torus
 # (build/bench/scene_memory_bench). Peak RSS includes the scene file's text
 # and yaml-cpp's nodes of one top-level item at a time (the loader never

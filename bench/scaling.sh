@@ -1,6 +1,5 @@
 #!/usr/bin/env bash
-# Thread scaling of `toroid render` (issue 6: CPU work scales >= 1.8x from
-# 1 to 2 threads on a render of a few seconds). Renders one scene at
+# Thread scaling of `toroid render` on a render of a few seconds. Renders one scene at
 # --threads 1 and at --threads 2, --reps times each, and prints the least
 # wall time of each, the speed-up (wall 1 / wall 2) and the CPU time (user +
 # sys) of each. Run it on an otherwise idle machine: the wall-clock ratio is
@@ -14,10 +13,8 @@
 #   bench/scaling.sh [--reps N] [SCENE.yaml [WIDTH HEIGHT]]
 #
 # Default scene: bench/vs-povray's 25 tori over a reflective checker floor,
-# at 2560x1440 (about 3 s on one core of the Intel Xeon of session 6; it
-# was 1920x1080 until the renderer got fast enough to make that a render of
-# under two seconds, where loading and writing the PNG, which are serial,
-# weigh more).
+# at 2560x1440, a few seconds on one core: long enough that loading the
+# scene and writing the PNG, which are serial, weigh little.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 reps=3

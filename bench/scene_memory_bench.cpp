@@ -1,4 +1,4 @@
-// Heap per torus in a loaded scene (issue 6: one torus instance costs at
+// Heap per torus in a loaded scene (the goal: one torus instance costs at
 // most 256 bytes beyond the scene's fixed cost). Loads a YAML scene of 1
 // and of 1 + N tori, each with its own transform and material, and counts
 // glibc's bytes in use once load_scene has returned (the YAML document is

@@ -29,7 +29,7 @@ struct Affine {
   // Points (w = 1) get the translation, vectors (w = 0) do not; w is kept.
   // Always inlined: every ray goes through it into object space, and
   // link-time optimisation otherwise calls it out of line from the largest
-  // callers (reflect-refract +0.7% instructions).
+  // callers.
   [[gnu::always_inline]] constexpr Tuple operator*(const Tuple& t) const { return {row(0, t), row(1, t), row(2, t), t.w}; }
 
   // One component of (*this) * t, for callers that need only one (a

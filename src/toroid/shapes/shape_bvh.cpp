@@ -25,9 +25,8 @@ namespace toroid {
 namespace {
 
 // Leaves hold one shape each: a shape test (a torus above all) costs far
-// more than a box test, and the leaf's box is the shape's own (measured with
-// callgrind on the 25-tori scene: leaves of 1, 2 and 4 shapes cost 754, 778
-// and 865 million instructions; scatter2000 +40% with 2).
+// more than a box test, and the leaf's box is then the shape's own, so a
+// missed box saves a whole shape test (CHANGELOG.md compares larger leaves).
 // Above this depth the hierarchy is split by the surface area heuristic,
 // below it at the median: at most 32 + 32 levels for 2^32 shapes, however
 // unevenly the heuristic splits (nested shapes of growing sizes can make it
@@ -151,7 +150,7 @@ void enters_both(const Node& n, const SlabRay& r, double t_max, bool met[2], dou
 }  // namespace
 
 ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shapes.size()) {
-  static_assert(sizeof(Node) == 64, "docs/performance.md counts 64 bytes of index per shape");
+  static_assert(sizeof(Node) == 64, "the index costs 64 bytes per shape (docs/performance.md, memory)");
   static std::atomic<std::uint64_t> next_serial{1};
   serial_ = next_serial++;
   std::vector<Item> items;
@@ -352,7 +351,7 @@ template <typename Stop>
 bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const {
   // The root's own box first, even though its children's lie inside it:
   // most rays that miss everything miss it, and one box costs less than
-  // two (without it, reflect-refract +1.0%, far +2.7% instructions).
+  // two.
   if (!has_root_) return false;
   const SlabRay r(ray, t_min);
   double entry;

@@ -53,7 +53,7 @@ class ShapeBvh {
   // those before sorting: a room's walls put six intersections on every
   // line). Shapes wholly behind the origin are left out: a closed surface
   // there is entered and left, and changes no container (the book lists
-  // them; they cost cover.yml 13% of its time).
+  // them, at a cost and to no effect).
   // Returns the hit in xs, the one hit(xs) names, or nullptr when there is
   // none.
   const Intersection* intersect_up_to_hit(const Ray& ray, Intersections& xs) const;

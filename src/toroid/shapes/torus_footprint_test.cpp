@@ -1,4 +1,4 @@
-// Memory: one torus instance costs at most 256 bytes (issue 6). The object
+// Memory: one torus instance costs at most 256 bytes. The object
 // and the shared-pointer control block it is allocated with, as the scene
 // loader allocates it (make_shared), come to 176 bytes; its material is a
 // pointer to a block shared with every shape of equal material (the
