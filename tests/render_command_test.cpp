@@ -1,8 +1,10 @@
 // End to end: the built `toroid render` binary.
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/inotify.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -120,6 +122,113 @@ TEST_F(RenderCommand, InterruptStopsTheRenderWithoutOutput) {
   EXPECT_EQ(WEXITSTATUS(status), 130);
   EXPECT_NE(message.find("toroid render: interrupted; nothing written"), std::string::npos) << message;
   EXPECT_TRUE(fs::is_empty(dir_)) << "the render left a file behind";
+}
+
+// A scene that renders fast and writes slowly: a fine checkerboard (the PNG
+// does not compress to nothing), 3000x2000 pixels.
+const char kPlaneScene[] = R"(- add: camera
+  width: 100
+  height: 100
+  field-of-view: 1.2
+  from: [0, 1.5, -5]
+  to: [0, 0, 0]
+  up: [0, 1, 0]
+- add: light
+  at: [-10, 10, -10]
+  intensity: [1, 1, 1]
+- add: plane
+  material:
+    pattern:
+      type: checkers
+      colors:
+        - [1, 1, 1]
+        - [0, 0, 0]
+      transform:
+        - [scale, 0.01, 0.01, 0.01]
+)";
+
+// When to interrupt: while the image is being written (the first write to
+// the temporary file that write_image renames into place), or, to show that
+// the test can tell, once the image is in place.
+enum class InterruptAt { Write, AfterRename };
+
+struct InterruptResult {
+  bool signalled = false;    // SIGINT was sent at the moment asked for
+  bool during_write = false; // the temporary file was there, the image not, after the signal
+  bool ended = false;
+  int status = 0;
+  std::string message;
+};
+
+// Renders kPlaneScene into `out_dir`/slow.png, watches the folder (inotify)
+// and sends SIGINT at `at`.
+InterruptResult interrupt_render(const fs::path& scene_dir, const fs::path& out_dir, InterruptAt at) {
+  InterruptResult res;
+  const fs::path scene = scene_dir / "plane.yml", out = out_dir / "slow.png";
+  std::ofstream(scene) << kPlaneScene;
+  const int in = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  if (in < 0) return res;
+  inotify_add_watch(in, out_dir.c_str(), IN_MODIFY | IN_MOVED_TO | IN_CREATE);
+  const fs::path err = scene_dir / "stderr.txt";
+  const pid_t pid = spawn_toroid({"render", scene.string(), "-o", out.string(), "--width", "3000", "--height",
+                                  "2000", "--threads", "2"},
+                                 err);
+  if (pid <= 0) {
+    close(in);
+    return res;
+  }
+  const std::string tmp_prefix = "." + out.filename().string() + ".tmp-";
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  alignas(inotify_event) char buf[4096];
+  while (!res.signalled && std::chrono::steady_clock::now() < end) {
+    pollfd p{in, POLLIN, 0};
+    if (poll(&p, 1, 100) <= 0) {
+      if (waitpid(pid, &res.status, WNOHANG) == pid) break;  // ended without the moment coming
+      continue;
+    }
+    const ssize_t len = read(in, buf, sizeof buf);
+    for (ssize_t i = 0; i < len && !res.signalled;) {
+      const auto* ev = reinterpret_cast<const inotify_event*>(buf + i);
+      const std::string name = ev->len ? ev->name : "";
+      const bool write_of_tmp = (ev->mask & IN_MODIFY) && name.rfind(tmp_prefix, 0) == 0;
+      const bool renamed = (ev->mask & IN_MOVED_TO) && name == out.filename().string();
+      if ((at == InterruptAt::Write && write_of_tmp) || (at == InterruptAt::AfterRename && renamed)) {
+        kill(pid, SIGINT);
+        res.signalled = true;
+        res.during_write = fs::exists(out_dir / name) && !fs::exists(out);
+      }
+      i += static_cast<ssize_t>(sizeof(inotify_event) + ev->len);
+    }
+  }
+  close(in);
+  res.ended = wait_for(pid, std::chrono::seconds(60), res.status);
+  if (!res.ended) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &res.status, 0);
+  }
+  res.message = toroid::testing::read_text(err);
+  return res;
+}
+
+// Ctrl-C while the PNG is being written: the write is abandoned, the
+// temporary file removed, nothing is left in the folder, and the command
+// exits 130 as it does when interrupted while rendering.
+// DISABLED: fails at this commit (issue 14, item 6): run_render does not look
+// at the interrupt flag once write_image has started, so the image is renamed
+// into place and the command exits 0. Enable with the fix in src/cmd/.
+TEST_F(RenderCommand, DISABLED_InterruptDuringTheImageWriteLeavesNoFile) {
+  const fs::path out_dir = dir_ / "out";
+  fs::create_directories(out_dir);
+  const InterruptResult r = interrupt_render(dir_, out_dir, InterruptAt::Write);
+  ASSERT_TRUE(r.signalled) << "the render never wrote its temporary file: " << r.message;
+  ASSERT_TRUE(r.during_write) << "the image was already in place when SIGINT was sent (the write was too fast)";
+  ASSERT_TRUE(r.ended) << "still running 60 s after SIGINT";
+  ASSERT_TRUE(WIFEXITED(r.status)) << "killed by signal " << (WIFSIGNALED(r.status) ? WTERMSIG(r.status) : 0);
+  EXPECT_EQ(WEXITSTATUS(r.status), 130) << r.message;
+  EXPECT_NE(r.message.find("toroid render: interrupted; nothing written"), std::string::npos) << r.message;
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(out_dir)) left.push_back(e.path().filename().string());
+  EXPECT_TRUE(left.empty()) << "left behind: " << ::testing::PrintToString(left);
 }
 
 }  // namespace
