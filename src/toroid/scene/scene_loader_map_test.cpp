@@ -92,21 +92,21 @@ TEST_F(MapPatterns, EveryMappingAndUvPatternOfTheBooksScenes) {
   EXPECT_APPROX(colour(s, 0, point(0.4315, 0.4670, 0.7719)), white);
   EXPECT_APPROX(colour(s, 0, point(-0.9654, 0.2552, -0.0534)), black);
   // Planar: the corners of each unit square.
-  EXPECT_APPROX(colour(s, 1, point(0.1, 0, 0.9)), Color(1, 0, 0));
-  EXPECT_APPROX(colour(s, 1, point(2.9, 0, 0.1)), Color(0, 1, 1));
+  EXPECT_APPROX(colour(s, 1, point(0.1, 0, 0.9)), (Color{1, 0, 0}));
+  EXPECT_APPROX(colour(s, 1, point(2.9, 0, 0.1)), (Color{0, 1, 1}));
   EXPECT_APPROX(colour(s, 1, point(0.5, 0, -0.5)), white);
   // Cylindrical through the pattern's transform: u < 0.5 is the red
   // column; v = (y / 2) mod 1 does not change it.
-  EXPECT_APPROX(colour(s, 2, point(0.5, 0.9, -0.5)), Color(1, 0, 0));
-  EXPECT_APPROX(colour(s, 2, point(-0.5, 1.9, 0.5)), Color(0, 0, 1));
+  EXPECT_APPROX(colour(s, 2, point(0.5, 0.9, -0.5)), (Color{1, 0, 0}));
+  EXPECT_APPROX(colour(s, 2, point(-0.5, 1.9, 0.5)), (Color{0, 0, 1}));
   // Cube: a colour per face; the front's image left to right.
-  EXPECT_APPROX(colour(s, 3, point(-1, 0.2, 0.3)), Color(1, 0, 0));
-  EXPECT_APPROX(colour(s, 3, point(1, 0.2, 0.3)), Color(0, 1, 0));
-  EXPECT_APPROX(colour(s, 3, point(0.2, 0.3, -1)), Color(0, 0, 1));
-  EXPECT_APPROX(colour(s, 3, point(0.2, 1, 0.3)), Color(1, 1, 0));
-  EXPECT_APPROX(colour(s, 3, point(0.2, -1, 0.3)), Color(0, 1, 1));
-  EXPECT_APPROX(colour(s, 3, point(-0.9, 0, 1)), Color(1, 0, 0));
-  EXPECT_APPROX(colour(s, 3, point(0.9, 0, 1)), Color(0, 0, 1));
+  EXPECT_APPROX(colour(s, 3, point(-1, 0.2, 0.3)), (Color{1, 0, 0}));
+  EXPECT_APPROX(colour(s, 3, point(1, 0.2, 0.3)), (Color{0, 1, 0}));
+  EXPECT_APPROX(colour(s, 3, point(0.2, 0.3, -1)), (Color{0, 0, 1}));
+  EXPECT_APPROX(colour(s, 3, point(0.2, 1, 0.3)), (Color{1, 1, 0}));
+  EXPECT_APPROX(colour(s, 3, point(0.2, -1, 0.3)), (Color{0, 1, 1}));
+  EXPECT_APPROX(colour(s, 3, point(-0.9, 0, 1)), (Color{1, 0, 0}));
+  EXPECT_APPROX(colour(s, 3, point(0.9, 0, 1)), (Color{0, 0, 1}));
 }
 
 // Eight patterns naming one image (as the book's skybox and mapped cubes

@@ -1,5 +1,5 @@
 // The top-level items of a YAML scene one at a time, so that loading a big
-// scene never holds yaml-cpp's node tree of the whole document (issue 6):
+// scene never holds yaml-cpp's node tree of the whole document:
 // split_items() parses the text once without building nodes and finds where
 // each item of the top-level block list is; load_item() builds one item.
 #pragma once

@@ -1,0 +1,31 @@
+// The scene items that are not shapes, `add: camera` and `add: light`, each
+// with its builder (camera_builder.cpp, light_builders.cpp).
+#pragma once
+
+#include <optional>
+
+#include "toroid/render/world.h"
+#include "toroid/scene/load_state.h"
+#include "toroid/scene/yaml_params.h"
+
+namespace toroid {
+
+struct CameraParams {
+  int width = 0, height = 0;
+  double fov = 0;
+  Tuple from, to, up;
+};
+
+// What the items read so far have made of the scene.
+struct SceneParts {
+  World world;
+  std::optional<CameraParams> camera;
+};
+
+// Builds one item into `parts`; its `add` key is read already.
+using ItemBuild = void (*)(LoadState& state, SceneParts& parts, ItemParams& item);
+
+void build_camera(LoadState& state, SceneParts& parts, ItemParams& item);
+void build_light(LoadState& state, SceneParts& parts, ItemParams& item);
+
+}  // namespace toroid
