@@ -177,7 +177,10 @@ InterruptResult interrupt_render(const fs::path& scene_dir, const fs::path& out_
     close(in);
     return res;
   }
-  const std::string tmp_prefix = "." + out.filename().string() + ".tmp-";
+  // Appended, not "." + string: GCC 12 at -O3 warns falsely on that (-Wrestrict, GCC bug 105329).
+  std::string tmp_prefix = ".";
+  tmp_prefix += out.filename().string();
+  tmp_prefix += ".tmp-";
   const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   alignas(inotify_event) char buf[4096];
   while (!res.signalled && std::chrono::steady_clock::now() < end) {
@@ -216,7 +219,7 @@ InterruptResult interrupt_render(const fs::path& scene_dir, const fs::path& out_
 // DISABLED: fails at this commit (issue 14, item 6): run_render does not look
 // at the interrupt flag once write_image has started, so the image is renamed
 // into place and the command exits 0. Enable with the fix in src/cmd/.
-TEST_F(RenderCommand, DISABLED_InterruptDuringTheImageWriteLeavesNoFile) {
+TEST_F(RenderCommand, InterruptDuringTheImageWriteLeavesNoFile) {
   const fs::path out_dir = dir_ / "out";
   fs::create_directories(out_dir);
   const InterruptResult r = interrupt_render(dir_, out_dir, InterruptAt::Write);

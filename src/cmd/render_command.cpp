@@ -54,7 +54,8 @@ void draw_bar(const RenderProgress& p) {
 }
 
 // SIGINT / SIGTERM: the handler only records the signal; the render skips its
-// remaining tiles and the command exits 128 + signal without writing.
+// remaining tiles, or the image write stops and removes its temporary file,
+// and the command exits 128 + signal without writing.
 static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
 std::atomic<bool> g_interrupted{false};
 volatile std::sig_atomic_t g_signal = 0;
@@ -120,7 +121,7 @@ int run_render(const RenderCommandOptions& opt) {
   if (stats.cancelled || g_interrupted) return interrupted_exit();
 
   try {
-    write_image(canvas, opt.output);
+    if (!write_image(canvas, opt.output, &g_interrupted)) return interrupted_exit();
   } catch (const std::exception& e) {
     std::cerr << "toroid render: " << e.what() << "\n";
     return 1;

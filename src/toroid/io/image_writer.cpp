@@ -35,8 +35,11 @@ void png_error_fn(png_structp png, png_const_charp msg) {
 }
 void png_warning_fn(png_structp, png_const_charp) {}
 
-// Returns an empty string on success, else what went wrong.
-std::string write_png(const Canvas& canvas, FILE* f) {
+bool cancelled(const std::atomic<bool>* cancel) { return cancel && cancel->load(std::memory_order_relaxed); }
+
+// Returns an empty string on success or when cancelled (then `stopped` is
+// set), else what went wrong.
+std::string write_png(const Canvas& canvas, FILE* f, const std::atomic<bool>* cancel, bool& stopped) {
   std::string error;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, png_error_fn, png_warning_fn);
   if (!png) return "out of memory";
@@ -62,6 +65,11 @@ std::string write_png(const Canvas& canvas, FILE* f) {
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_PAETH);
   png_write_info(png, info);
   for (int y = 0; y < h; ++y) {
+    if (cancelled(cancel)) {
+      stopped = true;
+      png_destroy_write_struct(&png, &info);
+      return {};
+    }
     for (int x = 0; x < w; ++x) {
       const Color c = canvas.pixel_at(x, y);
       row[3 * x + 0] = linear_to_srgb8(c.r);
@@ -116,7 +124,7 @@ void check_image_path(const std::string& path) {
   std::remove(tmp.c_str());
 }
 
-void write_image(const Canvas& canvas, const std::string& path) {
+bool write_image(const Canvas& canvas, const std::string& path, const std::atomic<bool>* cancel) {
   check_extension(path);
   if (canvas.width() <= 0 || canvas.height() <= 0) fail(path, "the image is empty");
   int fd = -1;
@@ -129,15 +137,21 @@ void write_image(const Canvas& canvas, const std::string& path) {
     fail(path, std::strerror(e));
   }
   std::string error;
+  bool stopped = false;
   if (lower_extension(path) == ".png") {
-    error = write_png(canvas, f);
+    error = write_png(canvas, f, cancel, stopped);
   } else {
     const std::string ppm = canvas_to_ppm(canvas);
-    if (std::fwrite(ppm.data(), 1, ppm.size(), f) != ppm.size()) error = std::strerror(errno);
+    stopped = cancelled(cancel);
+    if (!stopped && std::fwrite(ppm.data(), 1, ppm.size(), f) != ppm.size()) error = std::strerror(errno);
   }
   if (std::fflush(f) != 0 && error.empty()) error = std::strerror(errno);
   if (std::ferror(f) && error.empty()) error = "write error";
   if (std::fclose(f) != 0 && error.empty()) error = std::strerror(errno);
+  if (error.empty() && (stopped || cancelled(cancel))) {
+    std::remove(tmp.c_str());
+    return false;
+  }
   if (error.empty()) {
     // mkstemp creates 0600; give the image the usual permissions (umask).
     const mode_t mask = umask(0);
@@ -149,6 +163,7 @@ void write_image(const Canvas& canvas, const std::string& path) {
     std::remove(tmp.c_str());
     fail(path, error);
   }
+  return true;
 }
 
 }  // namespace toroid

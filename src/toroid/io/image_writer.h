@@ -1,6 +1,7 @@
 // Writing a canvas to disk: PNG (8-bit sRGB) or the book's plain PPM.
 #pragma once
 
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -18,7 +19,10 @@ struct ImageWriteError : std::runtime_error {
 // directory and renamed, so `path` only ever holds a complete image. Throws
 // ImageWriteError (e.g. "cannot write 'dir/x.png': No such file or
 // directory") and leaves nothing behind on failure.
-void write_image(const Canvas& canvas, const std::string& path);
+// With `cancel`, the write stops when it becomes true (checked between rows
+// and last just before the rename): the temporary file is removed, `path` is
+// left as it was, and write_image returns false. Returns true when written.
+bool write_image(const Canvas& canvas, const std::string& path, const std::atomic<bool>* cancel = nullptr);
 
 // Checks, before a long render, that write_image can save to `path`: a known
 // extension, an existing folder that this process can create files in (a

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <png.h>
 
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -54,6 +55,32 @@ TEST(ImageWriter, PngRoundTrip) {
   EXPECT_EQ(px, expected);
   // Only the image: no temporary file left behind.
   EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 1);
+  fs::remove_all(d);
+}
+
+TEST(ImageWriter, ACancelledWriteLeavesThePathAsItWas) {
+  const fs::path d = temp_dir("cancel");
+  Canvas c(4, 4);
+  const std::atomic<bool> cancel{true}, go_on{false};
+  for (const char* name : {"x.png", "x.ppm"}) {
+    SCOPED_TRACE(name);
+    const std::string path = (d / name).string();
+    EXPECT_FALSE(write_image(c, path, &cancel));
+    EXPECT_FALSE(fs::exists(path));
+    {
+      std::ofstream before(path);
+      before << "an image from before";
+    }
+    EXPECT_FALSE(write_image(c, path, &cancel));
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    EXPECT_EQ(ss.str(), "an image from before");
+    EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 1) << "a temporary file was left";
+    EXPECT_TRUE(write_image(c, path, &go_on));
+    EXPECT_NE(fs::file_size(path), std::string("an image from before").size());
+    fs::remove(path);
+  }
   fs::remove_all(d);
 }
 

@@ -17,7 +17,9 @@ NumberText read_finite_double(std::string_view token, double& value) {
 }
 
 std::string describe(NumberText result, std::string_view token) {
-  const std::string quoted = "'" + std::string(token) + "'";
+  std::string quoted = "'";  // appended, not "'" + ...: GCC 12 warns falsely (-Wrestrict) on that
+  quoted += token;
+  quoted += '\'';
   switch (result) {
     case NumberText::Ok: return {};
     case NumberText::NotANumber: return "not a number: " + quoted;

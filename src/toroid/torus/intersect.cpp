@@ -221,7 +221,9 @@ class RootCollector {
         // C = (h''/2h')^2 - h'''/6h': below the tolerance, no further sample needed.
         const double q = v.d2h / (2 * v.dh);
         const double c = std::abs(q * q - v.d3h / (6 * v.dh));
-        if (c * std::abs(step * step * step) <= 0.25 * tol) return next;
+        // (c step^2 first: it is dimensionless, so nothing underflows on
+        // tori of any size.)
+        if (c * (step * step) * std::abs(step) <= 0.25 * tol) return next;
       }
       const double moved = std::abs(next - x);
       x = next;
@@ -347,8 +349,8 @@ ShiftedRay shift_to_nearest_centre_point(const double origin[3], const double d[
   return r;
 }
 
-int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
-                  Search search, double t[4]) {
+int solve_unit_scale(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
+                     Search search, double t[4]) {
   const ShiftedRay ray = shift_to_nearest_centre_point(origin, d);
   const double s_min = t_min - ray.t_shift, s_max = t_max - ray.t_shift;
   double s_out[4], s_in[4];
@@ -366,6 +368,22 @@ int solve_default(double R, double r, const double origin[3], const double d[3],
     const double s = (j >= n_in || (i < n_out && s_out[i] <= s_in[j])) ? s_out[i++] : s_in[j++];
     t[n++] = ray.t_shift + s;
   }
+  return n;
+}
+
+// The default solver. A direction far from unit length would overflow or
+// underflow |d|^2 and the factors' derivatives: it is scaled by a power of
+// two, which is exact, and so is scaling t back. Directions of ordinary
+// length are used as they are.
+int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
+                  Search search, double t[4]) {
+  const double longest = std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
+  if ((longest > 0x1p-200 && longest < 0x1p200) || !(longest > 0) || !std::isfinite(longest))
+    return solve_unit_scale(R, r, origin, d, t_min, t_max, search, t);
+  const int e = std::ilogb(longest);
+  const double scaled[3] = {std::scalbn(d[0], -e), std::scalbn(d[1], -e), std::scalbn(d[2], -e)};
+  const int n = solve_unit_scale(R, r, origin, scaled, std::scalbn(t_min, e), std::scalbn(t_max, e), search, t);
+  for (int i = 0; i < n; ++i) t[i] = std::scalbn(t[i], -e);
   return n;
 }
 
@@ -397,8 +415,13 @@ int intersect_torus(double major, double minor, const double origin[3], const do
   if (solver == TorusSolver::Default) return solve_default(major, minor, origin, direction, -kInf, kInf, Search::All, t);
   double k[5];
   torus_quartic_coefficients(major, minor, origin, direction, k);
-  const int n = solver == TorusSolver::Ferrari ? solve_quartic_ferrari(k[0], k[1], k[2], k[3], k[4], t)
-                                                 : solve_quartic_tianheng(k[0], k[1], k[2], k[3], k[4], t);
+  double found[4];
+  const int m = solver == TorusSolver::Ferrari ? solve_quartic_ferrari(k[0], k[1], k[2], k[3], k[4], found)
+                                               : solve_quartic_tianheng(k[0], k[1], k[2], k[3], k[4], found);
+  // Coefficients that overflow give NaN or infinite "roots": not roots.
+  int n = 0;
+  for (int i = 0; i < m; ++i)
+    if (std::isfinite(found[i])) t[n++] = found[i];
   sort_small(t, n);
   return n;
 }

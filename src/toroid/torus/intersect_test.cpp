@@ -38,6 +38,35 @@ TEST(TorusIntersect, DirectionNeedNotBeUnit) {
   EXPECT_DOUBLE_EQ(x.t[3], 3.125);
 }
 
+TEST(TorusIntersect, DirectionsOfAnyScaleGiveTheSameRootsScaled) {
+  // |d|^2 of 1e300 or 1e-300 overflows or underflows a double; the roots
+  // are still those of the unit direction, divided by the length.
+  const Roots unit = roots(1, 0.25, {-5, 0.1, 0.05}, {1, 0, 0});
+  ASSERT_EQ(unit.n, 4);
+  for (const double length : {0x1p-1000, 0x1p-300, 1.2e151, 0x1p300, 0x1p1000}) {
+    SCOPED_TRACE(length);
+    const Roots x = roots(1, 0.25, {-5, 0.1, 0.05}, {length, 0, 0});
+    ASSERT_EQ(x.n, 4);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(x.t[i] * length, unit.t[i], 4e-16 * unit.t[i]) << i;
+  }
+  // The fuzzer's case: a direction of 1.2e151 along a diameter, ±0.75 / |d|.
+  const Roots far = roots(1, 0.25, {0, 0, 0}, {12e150, 0, 0});
+  ASSERT_EQ(far.n, 4);
+  EXPECT_DOUBLE_EQ(far.t[1], -0.75 / 12e150);
+  EXPECT_DOUBLE_EQ(far.t[2], 0.75 / 12e150);
+}
+
+TEST(TorusIntersect, ClosedFormsReportNoNonFiniteRoots) {
+  // Coefficients overflow here (R = 1e4, |o| ~ 1e113): the closed forms
+  // may find nothing, but never a NaN.
+  const std::array<double, 3> o{-4.425e113, 2.0000000000074567, 1.78e-307}, d{-1.0546875, 0, -8.85e113};
+  for (const TorusSolver s : {TorusSolver::Ferrari, TorusSolver::Tianheng, TorusSolver::Default}) {
+    SCOPED_TRACE(solver_name(s));
+    const Roots x = roots(1e4, 5.78e-275, o, d, s);
+    for (int i = 0; i < x.n; ++i) EXPECT_TRUE(std::isfinite(x.t[i])) << i;
+  }
+}
+
 TEST(TorusIntersect, NegativeRootsAreReported) {
   const Roots x = roots(1, 0.25, {5, 0, 0}, {1, 0, 0});
   ASSERT_EQ(x.n, 4);
