@@ -216,9 +216,6 @@ InterruptResult interrupt_render(const fs::path& scene_dir, const fs::path& out_
 // Ctrl-C while the PNG is being written: the write is abandoned, the
 // temporary file removed, nothing is left in the folder, and the command
 // exits 130 as it does when interrupted while rendering.
-// DISABLED: fails at this commit (issue 14, item 6): run_render does not look
-// at the interrupt flag once write_image has started, so the image is renamed
-// into place and the command exits 0. Enable with the fix in src/cmd/.
 TEST_F(RenderCommand, InterruptDuringTheImageWriteLeavesNoFile) {
   const fs::path out_dir = dir_ / "out";
   fs::create_directories(out_dir);
