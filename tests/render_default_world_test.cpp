@@ -21,10 +21,10 @@ TEST(EndToEnd, TheDefaultWorldRendersToAPpmWithTheBooksCentrePixel) {
   const Canvas image = render(c, w);
   ASSERT_EQ(image.width(), 11);
   ASSERT_EQ(image.height(), 11);
-  EXPECT_APPROX(image.pixel_at(5, 5), Color(0.38066, 0.47583, 0.2855));
+  EXPECT_APPROX(image.pixel_at(5, 5), (Color{0.38066, 0.47583, 0.2855}));
   // The corners look past the spheres: black.
-  EXPECT_APPROX(image.pixel_at(0, 0), Color(0, 0, 0));
-  EXPECT_APPROX(image.pixel_at(10, 10), Color(0, 0, 0));
+  EXPECT_APPROX(image.pixel_at(0, 0), (Color{0, 0, 0}));
+  EXPECT_APPROX(image.pixel_at(10, 10), (Color{0, 0, 0}));
 
   // In the PPM the centre pixel is the 61st of 121: round(255 * c).
   std::istringstream ppm(canvas_to_ppm(image));

@@ -4,6 +4,8 @@
 # sanitizer report fails the test that triggered it. It builds the scalar
 # code of the world index (TOROID_SIMD=OFF), which the Release build of
 # ./test.sh replaces with SSE2 on x86-64: the suite checks both.
+# CI runs the clang equivalent instead (tools/test-clang.sh: ASan + UBSan,
+# TOROID_SIMD=OFF, the fuzz targets too); this one is GCC's.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh

@@ -54,7 +54,8 @@ TEST(SharedMaterial, AssignmentReleasesTheOldBlockAndTakesTheNew) {
   EXPECT_EQ(b->diffuse, 0.3);
   EXPECT_EQ(a.use_count(), 2u);
   EXPECT_EQ(b_copy.use_count(), 1u);
-  b = b;  // self-assignment keeps the block
+  const SharedMaterial& same = b;  // through a reference: clang warns on a plain b = b
+  b = same;                         // self-assignment keeps the block
   EXPECT_EQ(b->diffuse, 0.3);
   EXPECT_EQ(a.use_count(), 2u);
 }

@@ -382,8 +382,12 @@ int solve_default(double R, double r, const double origin[3], const double d[3],
     return solve_unit_scale(R, r, origin, d, t_min, t_max, search, t);
   const int e = std::ilogb(longest);
   const double scaled[3] = {std::scalbn(d[0], -e), std::scalbn(d[1], -e), std::scalbn(d[2], -e)};
-  const int n = solve_unit_scale(R, r, origin, scaled, std::scalbn(t_min, e), std::scalbn(t_max, e), search, t);
-  for (int i = 0; i < n; ++i) t[i] = std::scalbn(t[i], -e);
+  double found[4];
+  const int m = solve_unit_scale(R, r, origin, scaled, std::scalbn(t_min, e), std::scalbn(t_max, e), search, found);
+  // A root beyond the largest double (a tiny direction) is not representable: left out.
+  int n = 0;
+  for (int i = 0; i < m; ++i)
+    if (const double ti = std::scalbn(found[i], -e); std::isfinite(ti)) t[n++] = ti;
   return n;
 }
 

@@ -56,6 +56,16 @@ TEST(TorusIntersect, DirectionsOfAnyScaleGiveTheSameRootsScaled) {
   EXPECT_DOUBLE_EQ(far.t[2], 0.75 / 12e150);
 }
 
+TEST(TorusIntersect, RootsBeyondTheLargestDoubleAreLeftOut) {
+  // A denormal direction puts the torus at t ~ 1e325: no double holds that.
+  const Roots x = roots(1e4, 1, {0, 0, 0}, {3.16e-322, 1.58e-322, 0});
+  for (int i = 0; i < x.n; ++i) EXPECT_TRUE(std::isfinite(x.t[i])) << i << ": " << x.t[i];
+  // Just inside the range the roots are there, finite.
+  const Roots y = roots(1e4, 1, {0, 0, 0}, {0x1p-1000, 0, 0});
+  ASSERT_EQ(y.n, 4);
+  EXPECT_DOUBLE_EQ(y.t[3], 10001 * 0x1p1000);
+}
+
 TEST(TorusIntersect, ClosedFormsReportNoNonFiniteRoots) {
   // Coefficients overflow here (R = 1e4, |o| ~ 1e113): the closed forms
   // may find nothing, but never a NaN.
