@@ -371,23 +371,33 @@ int solve_unit_scale(double R, double r, const double origin[3], const double d[
   return n;
 }
 
-// The default solver. A direction far from unit length would overflow or
-// underflow |d|^2 and the factors' derivatives: it is scaled by a power of
-// two, which is exact, and so is scaling t back. Directions of ordinary
-// length are used as they are.
+// The default solver. A torus far from unit size would underflow or
+// overflow the factors' products (R^2, r^2, |p|^2), and a direction far from
+// unit length |d|^2 and the derivatives: the geometry (radii and origin) and
+// the direction are each scaled by a power of two, which is exact, and so is
+// scaling t back. Tori and directions of ordinary size are used as they are.
 int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
                   Search search, double t[4]) {
-  const double longest = std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
-  if ((longest > 0x1p-200 && longest < 0x1p200) || !(longest > 0) || !std::isfinite(longest))
-    return solve_unit_scale(R, r, origin, d, t_min, t_max, search, t);
-  const int e = std::ilogb(longest);
-  const double scaled[3] = {std::scalbn(d[0], -e), std::scalbn(d[1], -e), std::scalbn(d[2], -e)};
+  const auto exponent_outside = [](double x, int range) {
+    return x > 0 && std::isfinite(x) && !(x > std::ldexp(1.0, -range) && x < std::ldexp(1.0, range)) ? std::ilogb(x)
+                                                                                                      : 0;
+  };
+  const int k = exponent_outside(R + r, 100);
+  const int j = exponent_outside(std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])}), 200);
+  if (k == 0 && j == 0) return solve_unit_scale(R, r, origin, d, t_min, t_max, search, t);
+  // p = o + t d becomes 2^-k p = o' + t' d' with o' = 2^-k o, d' = 2^-j d,
+  // t' = 2^(j-k) t.
+  const double o_s[3] = {std::scalbn(origin[0], -k), std::scalbn(origin[1], -k), std::scalbn(origin[2], -k)};
+  const double d_s[3] = {std::scalbn(d[0], -j), std::scalbn(d[1], -j), std::scalbn(d[2], -j)};
+  // An origin more than the largest double of torus sizes away sees nothing.
+  if (!std::isfinite(o_s[0]) || !std::isfinite(o_s[1]) || !std::isfinite(o_s[2])) return 0;
   double found[4];
-  const int m = solve_unit_scale(R, r, origin, scaled, std::scalbn(t_min, e), std::scalbn(t_max, e), search, found);
+  const int m = solve_unit_scale(std::scalbn(R, -k), std::scalbn(r, -k), o_s, d_s, std::scalbn(t_min, j - k),
+                                 std::scalbn(t_max, j - k), search, found);
   // A root beyond the largest double (a tiny direction) is not representable: left out.
   int n = 0;
   for (int i = 0; i < m; ++i)
-    if (const double ti = std::scalbn(found[i], -e); std::isfinite(ti)) t[n++] = ti;
+    if (const double ti = std::scalbn(found[i], k - j); std::isfinite(ti)) t[n++] = ti;
   return n;
 }
 

@@ -66,6 +66,25 @@ TEST(TorusIntersect, RootsBeyondTheLargestDoubleAreLeftOut) {
   EXPECT_DOUBLE_EQ(y.t[3], 10001 * 0x1p1000);
 }
 
+TEST(TorusIntersect, ToriOfAnySizeGiveTheSameRootsScaled) {
+  // R^2 of a 1e-185 torus underflows a double, of a 1e185 one overflows.
+  const Roots unit = roots(1, 0.25, {-5, 0.1, 0.05}, {1, 0, 0});
+  ASSERT_EQ(unit.n, 4);
+  for (const double size : {0x1p-700, 2.35e-185, 0x1p-120, 0x1p120, 2.35e185, 0x1p700}) {
+    SCOPED_TRACE(size);
+    const Roots x = roots(size, 0.25 * size, {-5 * size, 0.1 * size, 0.05 * size}, {1, 0, 0});
+    ASSERT_EQ(x.n, 4);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(x.t[i] / size, unit.t[i], 4e-16 * unit.t[i]) << i;
+  }
+  // The fuzzer's case: a nearly horn torus of 2.35e-185 seen from its
+  // centre, which is not on it (R - r = 7e-192).
+  const double R = 2.3534389759566928e-185, r = 2.3534382785503553e-185;
+  const Roots x = roots(R, r, {0, 0, 0}, {4.7068772545070478e-185, 0, 0});
+  ASSERT_EQ(x.n, 4);
+  for (int i = 0; i < 4; ++i) EXPECT_NE(x.t[i], 0.0) << i;
+  EXPECT_NEAR(x.t[3], (R + r) / 4.7068772545070478e-185, 1e-15);
+}
+
 TEST(TorusIntersect, ClosedFormsReportNoNonFiniteRoots) {
   // Coefficients overflow here (R = 1e4, |o| ~ 1e113): the closed forms
   // may find nothing, but never a NaN.
