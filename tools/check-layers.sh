@@ -16,6 +16,10 @@ layers=(math roots torus core io shapes render scene cmd)
 # The torus library: these folders form the toroid_torus target, which must
 # build with nothing but the standard library.
 standalone=(math roots torus)
+# The C API's header, src/toroid/torus_c.h, belongs to the torus layer; being
+# C, it may include these C standard headers (and nothing else).
+c_api_header=toroid/torus_c.h
+c_api_std_headers=(stddef.h)
 
 rank() {
   local i
@@ -33,6 +37,7 @@ report() {
 
 while IFS= read -r file; do
   case "$file" in
+    "$c_api_header") folder=torus ;;
     toroid/*) folder=$(echo "$file" | cut -d/ -f2) ;;
     cmd/*) folder=cmd ;;
     *) report "$file" "not in a layer (src/toroid/FOLDER/ or src/cmd/)"; continue ;;
@@ -46,7 +51,16 @@ while IFS= read -r file; do
   for s in "${standalone[@]}"; do [ "$s" = "$folder" ] && is_standalone=1; done
 
   while IFS=: read -r line text; do
-    if [[ "$text" =~ \#[[:space:]]*include[[:space:]]*\"(toroid/([a-z_]+)|cmd)/ ]]; then
+    if [ "$file" = "$c_api_header" ]; then
+      if [[ ! "$text" =~ \#[[:space:]]*include[[:space:]]*\<([^\>]+)\> ]] ||
+        [[ ! " ${c_api_std_headers[*]} " == *" ${BASH_REMATCH[1]} "* ]]; then
+        report "$file:$line" "the C API header includes a header other than ${c_api_std_headers[*]}: $text"
+      fi
+    elif [[ "$text" =~ \#[[:space:]]*include[[:space:]]*\"$c_api_header\" ]]; then
+      if [ "$(rank torus)" -gt "$own" ]; then
+        report "$file:$line" "$folder/ includes $c_api_header, a higher layer: $text"
+      fi
+    elif [[ "$text" =~ \#[[:space:]]*include[[:space:]]*\"(toroid/([a-z_]+)|cmd)/ ]]; then
       target="${BASH_REMATCH[2]:-cmd}"
       theirs=$(rank "$target")
       if [ "$theirs" -lt 0 ]; then
