@@ -70,11 +70,12 @@ while IFS= read -r file; do
       fi
     elif [[ "$text" =~ \#[[:space:]]*include[[:space:]]*\"([^\"]+)\" ]]; then
       # Quoted includes name toroid's own headers by their path from src/;
-      # unit tests may also use the shared test helpers in tests/.
-      if [[ "$file" != *_test.cpp ]] || [[ ! -e "../tests/${BASH_REMATCH[1]}" ]]; then
+      # unit tests (*_test.cpp, *_test_*.h) may also use the shared test
+      # helpers in tests/.
+      if [[ "$file" != *_test.cpp && "$file" != *_test_*.h ]] || [[ ! -e "../tests/${BASH_REMATCH[1]}" ]]; then
         report "$file:$line" "quoted include outside toroid/: $text"
       fi
-    elif [ "$is_standalone" = 1 ] && [[ "$file" != *_test.cpp ]] && [[ "$text" =~ \#[[:space:]]*include[[:space:]]*\<([^\>]+)\> ]]; then
+    elif [ "$is_standalone" = 1 ] && [[ "$file" != *_test.cpp && "$file" != *_test_*.h ]] && [[ "$text" =~ \#[[:space:]]*include[[:space:]]*\<([^\>]+)\> ]]; then
       header="${BASH_REMATCH[1]}"
       # Standard C++ headers have no extension and no folder.
       if [[ "$header" == */* || "$header" == *.* ]]; then
