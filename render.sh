@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds toroid and renders the bundled default scene to bagels.png.
 # Extra arguments go to `toroid render` (e.g. --width 1920 --samples 16).
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds toroid and runs every test (ctest). Installs missing Debian packages first.
 set -euo pipefail
 cd "$(dirname "$0")"

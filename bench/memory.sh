@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Memory per torus: peak RSS of `toroid render` (8x8 pixels) on
 # scenes of 1 and 10,001 tori, and the heap a loaded scene keeps per torus
 # (build/bench/scene_memory_bench). Peak RSS includes the scene file's text

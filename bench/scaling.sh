@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Thread scaling of `toroid render` on a render of a few seconds. Renders one scene at
 # --threads 1 and at --threads 2, --reps times each, and prints the least
 # wall time of each, the speed-up (wall 1 / wall 2) and the CPU time (user +

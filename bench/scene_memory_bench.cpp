@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Heap per torus in a loaded scene (the goal: one torus instance costs at
 // most 256 bytes beyond the scene's fixed cost). Loads a YAML scene of 1
 // and of 1 + N tori, each with its own transform and material, and counts
@@ -27,9 +28,11 @@ std::string scene_with_tori(int n, bool distinct_materials) {
        "  up: [0, 1, 0]\n- add: light\n  at: [0, 50, -50]\n  intensity: [1, 1, 1]\n";
   for (int i = 0; i < n; ++i)
     s << "- add: torus\n  major: 0.4\n  minor: 0.1\n  material:\n    color: [0.8, 0.3, "
-      << (distinct_materials ? 0.2 + 1e-5 * i : 0.2) << "]\n    specular: 0.4\n"
-         "  transform:\n    - [rotate-x, " << 0.01 * i << "]\n    - [translate, " << (i % 100) - 50 << ", "
-      << (i / 100) % 100 - 50 << ", " << i / 10000 << "]\n";
+      << (distinct_materials ? 0.2 + 1e-5 * i : 0.2)
+      << "]\n    specular: 0.4\n"
+         "  transform:\n    - [rotate-x, "
+      << 0.01 * i << "]\n    - [translate, " << (i % 100) - 50 << ", " << (i / 100) % 100 - 50 << ", " << i / 10000
+      << "]\n";
   return s.str();
 }
 
@@ -60,8 +63,7 @@ void BM_HeapPerTorus(benchmark::State& state) {
     list_bytes = (b.world.objects.capacity() - a.world.objects.capacity()) * sizeof(b.world.objects[0]);
     // The heap chunk of each torus (usable size + glibc's 8-byte header);
     // libstdc++'s make_shared puts its 16-byte control block first.
-    for (const auto& s : b.world.objects)
-      chunk_bytes += malloc_usable_size(reinterpret_cast<char*>(s.get()) - 16) + 8;
+    for (const auto& s : b.world.objects) chunk_bytes += malloc_usable_size(reinterpret_cast<char*>(s.get()) - 16) + 8;
   }
   const double per = static_cast<double>(heap_large - heap_small) / n;
   state.counters["heap_per_torus_B"] = per;
@@ -74,6 +76,11 @@ void BM_HeapPerTorus(benchmark::State& state) {
   state.counters["instance_chunk_B"] = static_cast<double>(chunk_bytes) / (n + 1);
   state.counters["sizeof_Torus_B"] = sizeof(toroid::Torus);
 }
-BENCHMARK(BM_HeapPerTorus)->ArgNames({"tori", "distinct_materials"})->Args({10000, 0})->Args({10000, 1})->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_HeapPerTorus)
+    ->ArgNames({"tori", "distinct_materials"})
+    ->Args({10000, 0})
+    ->Args({10000, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace

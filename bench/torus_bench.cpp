@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ns per ray-torus intersection, per solver (docs/torus.md records the figures).
 //   mixed:   rays from 2-6 sizes away aimed at random points of the torus's
 //            bounding box, hits and misses as a camera sees them;
@@ -72,8 +73,8 @@ void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver) {
   double t = 0;
   for (auto _ : state) {
     const BenchRay& r = rs[i++ & (rs.size() - 1)];
-    benchmark::DoNotOptimize(toroid::intersect_torus_nearest(kR, kr, r.o, r.d, 1e-9,
-                                                             std::numeric_limits<double>::infinity(), &t, solver));
+    benchmark::DoNotOptimize(
+        toroid::intersect_torus_nearest(kR, kr, r.o, r.d, 1e-9, std::numeric_limits<double>::infinity(), &t, solver));
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations());

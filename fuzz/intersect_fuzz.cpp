@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz target: intersect_torus on any torus (major, minor > 0) and any ray,
 // every solver, and the roots checked as in torus_root_checks.h: 0..4,
 // finite, ascending, each on the surface within rounding.
@@ -19,8 +20,8 @@
 #include <cstdint>
 #include <cstring>
 
-#include "torus_root_checks.h"
 #include "toroid/torus/intersect.h"
+#include "torus_root_checks.h"
 
 namespace {
 

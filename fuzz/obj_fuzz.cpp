@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz target: the OBJ loader, through to the BVH the renderer builds. Any
 // input must load or throw ObjError.
 #include <cstddef>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz target: the `toroid intersect` line format, line by line as the
 // command reads it, and the torus intersection of every ray it accepts:
 // 0..4 roots, finite, ascending, each on the surface (torus_root_checks.h).
@@ -8,9 +9,9 @@
 #include <string>
 #include <string_view>
 
-#include "torus_root_checks.h"
 #include "toroid/io/ray_line.h"
 #include "toroid/torus/intersect.h"
+#include "torus_root_checks.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Replays fuzz inputs without libFuzzer: feeds every file named on the command
 // line (folders: every file in them) to the target's LLVMFuzzerTestOneInput.
 // Built with the ordinary compiler, so ctest replays the committed corpus.

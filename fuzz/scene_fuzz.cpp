@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fuzz target: the YAML scene loader. Any input must load or throw SceneError;
 // anything else (a crash, another exception, a hang) is a bug. Loaded item by
 // item (the default) and as a whole document, it must give the same result:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the intersect fuzz targets check of the roots intersect_torus returns
 // for a ray, beyond their count: each root finite, the list ascending, and
 // each point o + t d on the torus within rounding.
@@ -38,8 +39,7 @@ static_assert(std::numeric_limits<long double>::digits >= 64,
 inline constexpr double kResidualUlps = 16;
 
 // Distance from o + t d to the torus surface (both factors), in long double.
-inline long double torus_surface_distance(double major, double minor, const double o[3], const double d[3],
-                                          double t) {
+inline long double torus_surface_distance(double major, double minor, const double o[3], const double d[3], double t) {
   long double p[3];
   for (int i = 0; i < 3; ++i) p[i] = static_cast<long double>(o[i]) + static_cast<long double>(t) * d[i];
   const long double rho = std::hypot(p[0], p[1]);
@@ -50,20 +50,19 @@ inline long double torus_surface_distance(double major, double minor, const doub
 }
 
 // The bound above for root t.
-inline long double torus_residual_bound(double major, double minor, const double o[3], const double d[3],
-                                        double t) {
-  const long double on = std::hypot(static_cast<long double>(o[0]), static_cast<long double>(o[1]),
-                                    static_cast<long double>(o[2]));
-  const long double dn = std::hypot(static_cast<long double>(d[0]), static_cast<long double>(d[1]),
-                                    static_cast<long double>(d[2]));
+inline long double torus_residual_bound(double major, double minor, const double o[3], const double d[3], double t) {
+  const long double on =
+      std::hypot(static_cast<long double>(o[0]), static_cast<long double>(o[1]), static_cast<long double>(o[2]));
+  const long double dn =
+      std::hypot(static_cast<long double>(d[0]), static_cast<long double>(d[1]), static_cast<long double>(d[2]));
   const long double scale = on + std::abs(static_cast<long double>(t)) * dn + major + minor;
   return kResidualUlps * std::numeric_limits<double>::epsilon() * scale;
 }
 
-[[noreturn]] inline void fail_roots(const char* what, double major, double minor, const double o[3],
-                                    const double d[3], const double* t, int n) {
-  std::fprintf(stderr, "intersect_torus(R=%.17g, r=%.17g, o=(%.17g %.17g %.17g), d=(%.17g %.17g %.17g)): %s;",
-               major, minor, o[0], o[1], o[2], d[0], d[1], d[2], what);
+[[noreturn]] inline void fail_roots(const char* what, double major, double minor, const double o[3], const double d[3],
+                                    const double* t, int n) {
+  std::fprintf(stderr, "intersect_torus(R=%.17g, r=%.17g, o=(%.17g %.17g %.17g), d=(%.17g %.17g %.17g)): %s;", major,
+               minor, o[0], o[1], o[2], d[0], d[1], d[2], what);
   for (int i = 0; i < n; ++i) {
     std::fprintf(stderr, " t%d=%.17g", i, t[i]);
     if (std::isfinite(t[i]))
@@ -76,8 +75,8 @@ inline long double torus_residual_bound(double major, double minor, const double
 
 // Aborts, saying why, unless 0 <= n <= 4 and t[0..n) are finite and
 // ascending (equal where a root is double): what every solver promises.
-inline void check_torus_root_list(double major, double minor, const double o[3], const double d[3],
-                                  const double* t, int n) {
+inline void check_torus_root_list(double major, double minor, const double o[3], const double d[3], const double* t,
+                                  int n) {
   if (n < 0 || n > 4) fail_roots("root count outside 0..4", major, minor, o, d, t, 0);
   for (int i = 0; i < n; ++i)
     if (!std::isfinite(t[i])) fail_roots("a root is not finite", major, minor, o, d, t, n);

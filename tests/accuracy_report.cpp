@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Prints the accuracy table of every solver on every ray family
 // (docs/torus.md shows its output). Usage: accuracy_report [rays-per-family]
 #include <cstdio>
@@ -13,7 +14,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: accuracy_report [rays-per-family > 0]\n");
     return 2;
   }
-  std::printf("| family | solver | rays | roots | missed | sub-visible missed | spurious | extra | p50 | p99 | max | grazing pairs found |\n");
+  std::printf(
+      "| family | solver | rays | roots | missed | sub-visible missed | spurious | extra | p50 | p99 | max | grazing "
+      "pairs found |\n");
   std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const Family& f : make_families(n)) {
     const ReferenceSet ref = compute_references(f);

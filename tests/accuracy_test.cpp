@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The accuracy bars of the default solver, per ray family (docs/torus.md):
 // no missed and no spurious roots anywhere, the roots of grazing (near-
 // tangent) pairs included; p99 root error <= 1e-12 r, or 1e-10 r for the
@@ -107,10 +108,10 @@ TEST(AccuracyHarness, DetectsMissingRoots) {
 Family grazing_check_family() {
   Family f{"grazing-self-check", 1e-12, 1e-10, false, {}};
   auto ray = [](double z) { return RayCase{1.0, 0.25, {-5, 0, z}, {1, 0, 0}}; };
-  f.rays.push_back(ray(0.0));            // four roots, no close pair
-  f.rays.push_back(ray(0.25));           // tangent: two exact double roots, t = 4 and 6
-  f.rays.push_back(ray(0.25 - 1e-13));   // two grazing pairs, chord 4.5e-7 = 1.8e-6 r (< 1e-5 r)
-  f.rays.push_back(ray(0.25 - 5e-11));   // chords 1e-5 = 4e-5 r: close, but not a grazing pair
+  f.rays.push_back(ray(0.0));           // four roots, no close pair
+  f.rays.push_back(ray(0.25));          // tangent: two exact double roots, t = 4 and 6
+  f.rays.push_back(ray(0.25 - 1e-13));  // two grazing pairs, chord 4.5e-7 = 1.8e-6 r (< 1e-5 r)
+  f.rays.push_back(ray(0.25 - 5e-11));  // chords 1e-5 = 4e-5 r: close, but not a grazing pair
   return f;
 }
 
@@ -120,8 +121,8 @@ RootFinder without_close_pairs(bool merge) {
   return [merge](const RayCase& c, double t[4]) {
     double all[4];
     const int n = intersect_torus(c.major, c.minor, c.origin, c.direction, all);
-    const double dlen = std::sqrt(c.direction[0] * c.direction[0] + c.direction[1] * c.direction[1] +
-                                  c.direction[2] * c.direction[2]);
+    const double dlen =
+        std::sqrt(c.direction[0] * c.direction[0] + c.direction[1] * c.direction[1] + c.direction[2] * c.direction[2]);
     const double chord = 1e-5 * c.minor / dlen;
     int k = 0;
     for (int i = 0; i < n; ++i) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bad-input corpus (tests/bad-input/, see its README.md): every case must
 // exit with status 2, print its expected message on stderr, and write
 // nothing: no new file appears and an existing output file stays as it was.
@@ -37,8 +38,7 @@ std::vector<BadInput> all_cases() {
   for (const auto& [kind, ext] : kKinds) {
     if (!fs::is_directory(kCorpus / kind)) continue;
     for (const auto& e : fs::directory_iterator(kCorpus / kind))
-      if (e.path().extension() == ext && fs::exists(e.path().string() + ".expected"))
-        cases.push_back({kind, e.path()});
+      if (e.path().extension() == ext && fs::exists(e.path().string() + ".expected")) cases.push_back({kind, e.path()});
   }
   std::sort(cases.begin(), cases.end(), [](const BadInput& a, const BadInput& b) { return a.file < b.file; });
   return cases;
@@ -72,8 +72,8 @@ std::string obj_scene(const std::string& obj_name) {
 class BadInputCorpus : public ::testing::TestWithParam<BadInput> {
  protected:
   void SetUp() override {
-    work_ = fs::temp_directory_path() / ("toroid_bad_input_" + std::to_string(::getpid()) + "_" +
-                                         GetParam().kind + "_" + GetParam().file.stem().string());
+    work_ = fs::temp_directory_path() / ("toroid_bad_input_" + std::to_string(::getpid()) + "_" + GetParam().kind +
+                                         "_" + GetParam().file.stem().string());
     fs::remove_all(work_);
     fs::create_directories(work_);
   }
@@ -82,7 +82,9 @@ class BadInputCorpus : public ::testing::TestWithParam<BadInput> {
   toroid::testing::CommandResult run_case() {
     const BadInput& c = GetParam();
     const std::string out = (work_ / "out.png").string();
-    if (c.kind == "scene") return toroid::testing::run_toroid("render '" + c.file.filename().string() + "' -o '" + out + "'", c.file.parent_path());
+    if (c.kind == "scene")
+      return toroid::testing::run_toroid("render '" + c.file.filename().string() + "' -o '" + out + "'",
+                                         c.file.parent_path());
     if (c.kind == "obj") return toroid::testing::run_toroid("render scene.yml -o out.png", work_);
     if (c.kind == "intersect") return toroid::testing::run_toroid("intersect", work_, c.file);
     // cli: the arguments, with {scene} a scene that renders.

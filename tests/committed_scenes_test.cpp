@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scenes under scenes/ (the default scene, the chapter pictures, the
 // stress scenes) load and render, and the chapter-15 mesh is what its
 // generator (tools/teapot_obj.py) says it is.

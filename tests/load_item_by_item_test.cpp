@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every scene file we have loads to the same world item by item (the default,
 // src/toroid/scene/yaml_items.h) as from its whole YAML document: the same
 // small render, pixel for pixel; and every bad scene of the corpus gives the

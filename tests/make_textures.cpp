@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes the procedural textures of tests/textures/procedural.h into a
 // directory: earthmap1k.ppm, the six sky faces, doughnut.png.
 // Usage: make_textures DIR [SIZE]   (SIZE: the height, default 512)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // End to end: the built `toroid render` binary.
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -43,7 +44,8 @@ const std::string kScene = std::string(TOROID_SOURCE_DIR) + "/scenes/bagels.yaml
 TEST_F(RenderCommand, RendersThePngAndReports) {
   const fs::path out = dir_ / "b.png";
   std::string err;
-  ASSERT_EQ(run("render " + kScene + " -o " + out.string() + " --width 40 --height 30 --threads 2 --samples 4", &err), 0)
+  ASSERT_EQ(run("render " + kScene + " -o " + out.string() + " --width 40 --height 30 --threads 2 --samples 4", &err),
+            0)
       << err;
   EXPECT_TRUE(fs::exists(out));
   EXPECT_NE(err.find("40x30, 4 samples, 2 threads, "), std::string::npos) << err;
@@ -153,8 +155,8 @@ const char kPlaneScene[] = R"(- add: camera
 enum class InterruptAt { Write, AfterRename };
 
 struct InterruptResult {
-  bool signalled = false;    // SIGINT was sent at the moment asked for
-  bool during_write = false; // the temporary file was there, the image not, after the signal
+  bool signalled = false;     // SIGINT was sent at the moment asked for
+  bool during_write = false;  // the temporary file was there, the image not, after the signal
   bool ended = false;
   int status = 0;
   std::string message;
@@ -170,9 +172,8 @@ InterruptResult interrupt_render(const fs::path& scene_dir, const fs::path& out_
   if (in < 0) return res;
   inotify_add_watch(in, out_dir.c_str(), IN_MODIFY | IN_MOVED_TO | IN_CREATE);
   const fs::path err = scene_dir / "stderr.txt";
-  const pid_t pid = spawn_toroid({"render", scene.string(), "-o", out.string(), "--width", "3000", "--height",
-                                  "2000", "--threads", "2"},
-                                 err);
+  const pid_t pid = spawn_toroid(
+      {"render", scene.string(), "-o", out.string(), "--width", "3000", "--height", "2000", "--threads", "2"}, err);
   if (pid <= 0) {
     close(in);
     return res;

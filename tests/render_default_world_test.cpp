@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // End to end: the book's default world through camera, renderer and PPM.
 #include <gtest/gtest.h>
 
@@ -6,9 +7,9 @@
 #include <string>
 
 #include "support/approx.h"
+#include "toroid/core/canvas.h"
 #include "toroid/math/transform.h"
 #include "toroid/render/camera.h"
-#include "toroid/core/canvas.h"
 #include "toroid/render/world.h"
 
 namespace toroid {

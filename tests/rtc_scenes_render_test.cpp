@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every public RTC scene in TOROID_SHARED_DIR/rtc-scenes loads and renders
 // (small). earth.yml and skybox.yml name images that the directory does not
 // ship: each scene is copied into a temporary directory beside procedural
@@ -27,10 +28,22 @@ using testing::TempDir;
 const fs::path kScenes = fs::path(TOROID_SHARED_DIR) / "rtc-scenes";
 
 const char* const kSharedScenes[] = {
-    "align-check-plane.yml", "chap7-putting-it-together.yml", "checkered-cube.yml", "checkered-cylinder.yml",
-    "checkered-plane.yml",   "checkered-sphere.yml",          "cover.yml",          "csg_difference.kjeldahl.yml",
-    "cylinders.yml",         "earth.yml",                     "group.yml",          "reflect-refract.yml",
-    "shadow-glamour-shot.yml", "skybox.yml",                  "table.yml",          "three-spheres.yml",
+    "align-check-plane.yml",
+    "chap7-putting-it-together.yml",
+    "checkered-cube.yml",
+    "checkered-cylinder.yml",
+    "checkered-plane.yml",
+    "checkered-sphere.yml",
+    "cover.yml",
+    "csg_difference.kjeldahl.yml",
+    "cylinders.yml",
+    "earth.yml",
+    "group.yml",
+    "reflect-refract.yml",
+    "shadow-glamour-shot.yml",
+    "skybox.yml",
+    "table.yml",
+    "three-spheres.yml",
 };
 
 TEST(SharedScenes, TheListNamesEveryScene) {
@@ -47,7 +60,8 @@ Canvas render_small(const std::string& scene_name, int width) {
   fs::copy_file(kScenes / scene_name, dir.path() / scene_name);
   textures::write_scene_textures(dir.path(), 32);
   const Scene scene = load_scene(dir.file(scene_name));
-  const int height = std::max(1, static_cast<int>(std::lround(width * double(scene.camera.vsize()) / scene.camera.hsize())));
+  const int height =
+      std::max(1, static_cast<int>(std::lround(width * double(scene.camera.vsize()) / scene.camera.hsize())));
   Camera camera(width, height, scene.camera.field_of_view());
   camera.set_transform(scene.camera.transform());
   RenderOptions options;
@@ -67,14 +81,16 @@ TEST_P(SharedScene, LoadsAndRenders) {
   EXPECT_EQ(count_pixels(image, [](const Color& c) { return !std::isfinite(c.r + c.g + c.b); }), 0);
   // Something is in view: not one flat colour.
   auto luminance = [](const Color& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
-  const auto [lo, hi] = std::minmax_element(image.pixels().begin(), image.pixels().end(),
-                                            [&](const Color& a, const Color& b) { return luminance(a) < luminance(b); });
+  const auto [lo, hi] =
+      std::minmax_element(image.pixels().begin(), image.pixels().end(),
+                          [&](const Color& a, const Color& b) { return luminance(a) < luminance(b); });
   EXPECT_GT(luminance(*hi) - luminance(*lo), 0.1);
 }
 
 std::string test_name(const ::testing::TestParamInfo<const char*>& info) {
   std::string n = fs::path(info.param).stem().string();
-  std::replace_if(n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+  std::replace_if(
+      n.begin(), n.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
   return n;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sequences.feature (soft-shadows bonus chapter, community transcription).
 #include "support/sequence.h"
 

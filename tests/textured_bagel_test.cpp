@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // scenes/textured-bagel.yaml: its committed texture is what the generator
 // writes, tiles in both directions, and the scene renders icing on top.
 #include <gtest/gtest.h>
@@ -8,9 +9,9 @@
 #include "textures/procedural.h"
 #include "toroid/io/image_reader.h"
 #include "toroid/io/image_writer.h"
+#include "toroid/io/srgb.h"
 #include "toroid/render/renderer.h"
 #include "toroid/scene/scene_loader.h"
-#include "toroid/io/srgb.h"
 
 namespace toroid {
 namespace {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shadow acne, light leaks and black pixels on tori at every scale.
 //
 // Each case renders a small image of a torus (ring in its xy-plane) lying on
@@ -68,8 +69,8 @@ constexpr int kWidth = 96, kHeight = 72;
 struct Layout {
   double R, r;
   Tuple offset;
-  Tuple light;           // on the axis
-  Tuple blocker;         // sphere centre, on the axis
+  Tuple light;    // on the axis
+  Tuple blocker;  // sphere centre, on the axis
   double blocker_radius;
 };
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Runs every case of the bad-input corpus (tests/bad-input/) the way
 # tests/bad_input_test.cpp does and prints, per case, the exit status and the
 # message: tab-separated, or with --markdown one table per kind (the examples

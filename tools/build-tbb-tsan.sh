@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds Debian's own oneTBB (the source package of the installed libtbb-dev,
 # same version, Debian patches applied) with ThreadSanitizer, libtbb only,
 # into a prefix (default build-ci-tbb-tsan/prefix) for tools/test-tsan.sh.

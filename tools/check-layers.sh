@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Checks that every folder of src/ includes only folders of its own layer or
 # below (DEVELOPERS.md, "Layers"), and that the torus library
 # (src/toroid/{math,roots,torus}) includes nothing but the C++ standard

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Runs each libFuzzer target of a -DTOROID_FUZZ=ON build for a bounded time
 # on a copy of its corpus (fuzz/corpus/NAME), with its dictionary
 # (fuzz/NAME.dict) when it has one. Any crash, sanitizer report, leak,

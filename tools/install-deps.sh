@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs the Debian 12 packages toroid needs, only those that are missing.
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config ccache

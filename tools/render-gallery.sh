@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Renders the pictures of docs/gallery.md into docs/images, one core each,
 # and prints one line per picture: the command, toroid's own final line
 # (size, samples, threads, wall time, rays) and the CPU time (user + sys).

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes a low-poly, teapot-like OBJ mesh (our own, generated): a body and a
 lid of revolution, a knob, a spout and a handle swept along curves, and a flat
 bottom as one 32-sided polygon (so the loader's fan triangulation is used).

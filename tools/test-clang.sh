@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The Clang job of CI, in build-ci-clang/: clang++ 14 (Debian's clang) with
 # -Werror builds everything (library, command, tests, benchmarks, fuzz
 # targets) with AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer's

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds toroid with AddressSanitizer + UndefinedBehaviorSanitizer in
 # build-asan/ (no benchmarks) and runs every test under it with ctest: any
 # sanitizer report fails the test that triggered it. It builds the scalar

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The ThreadSanitizer job of CI, in build-ci-tsan/: clang++ 14 with -Werror
 # builds toroid and its tests with -fsanitize=thread against a libtbb built
 # with ThreadSanitizer too (tools/build-tbb-tsan.sh: Debian's oneTBB source,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Counts the pixels that differ between two PPM images (P3 plain or P6
 // binary, maxval < 256), as toroid (.ppm) and POV-Ray (+FP) write them.
 //   image_diff A.ppm B.ppm [THRESHOLD]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # toroid against POV-Ray 3.7 on the same torus scenes.
 #
 #   bench/vs-povray/run.sh [--reps N] [--threads "1 2"] [--scenes "tori25 scatter2000 glass3 far"] [--out DIR]

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Writes one benchmark scene, from one description, as a toroid YAML scene
 # or as the equivalent POV-Ray 3.7 scene.
 #

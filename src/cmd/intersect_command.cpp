@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `toroid intersect`: rays on stdin, roots on stdout (see README).
 #include "cmd/intersect_command.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `toroid` command line: a thin layer over the library.
 #include <CLI/CLI.hpp>
 

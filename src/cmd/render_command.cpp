@@ -1,11 +1,12 @@
+// SPDX-License-Identifier: Apache-2.0
 // `toroid render`: a YAML scene to a PNG or PPM image.
 #include "cmd/render_command.h"
 
 #include <unistd.h>
 
 #include <atomic>
-#include <csignal>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -35,8 +36,10 @@ std::string format_duration(double s) {
   if (!std::isfinite(s) || s < 0) return "--:--";
   const long t = std::lround(s);
   char buf[32];
-  if (t >= 3600) std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
-  else std::snprintf(buf, sizeof buf, "%02ld:%02ld", t / 60, t % 60);
+  if (t >= 3600)
+    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", t / 3600, (t / 60) % 60, t % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%02ld:%02ld", t / 60, t % 60);
   return buf;
 }
 
@@ -128,8 +131,7 @@ int run_render(const RenderCommandOptions& opt) {
   }
   if (!opt.quiet) {
     std::fprintf(stderr, "%dx%d, %d samples, %d threads, %.2f s, %llu rays, %.2f Mrays/s\n", canvas.width(),
-                 canvas.height(), ro.samples, stats.threads, stats.seconds,
-                 static_cast<unsigned long long>(stats.rays),
+                 canvas.height(), ro.samples, stats.threads, stats.seconds, static_cast<unsigned long long>(stats.rays),
                  stats.seconds > 0 ? static_cast<double>(stats.rays) / stats.seconds / 1e6 : 0.0);
   }
   return 0;
@@ -152,8 +154,7 @@ void add_render_command(CLI::App& app, int& exit_code) {
       ->check(side);
   sub->add_option("--height", opt->height, "Image height in pixels (overrides the camera's; keeps its field of view)")
       ->check(side);
-  sub->add_option("--samples", opt->samples,
-                  "Samples per pixel (>= 1): a stratified, deterministically jittered grid")
+  sub->add_option("--samples", opt->samples, "Samples per pixel (>= 1): a stratified, deterministically jittered grid")
       ->check(CLI::Range(1, 65536))
       ->capture_default_str();
   sub->add_option("--threads", opt->threads, "Worker threads (>= 1; default: every core)")->check(CLI::Range(1, 4096));

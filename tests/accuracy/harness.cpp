@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "accuracy/harness.h"
 
 #include <algorithm>
@@ -38,9 +39,7 @@ class Sampler {
     const Vec c{R * std::cos(u), R * std::sin(u), 0};
     return {c + n * r, n};
   }
-  Vec box_point(double R, double r) {
-    return {uniform(-(R + r), R + r), uniform(-(R + r), R + r), uniform(-r, r)};
-  }
+  Vec box_point(double R, double r) { return {uniform(-(R + r), R + r), uniform(-(R + r), R + r), uniform(-r, r)}; }
 
  private:
   std::mt19937_64 rng_;
@@ -113,10 +112,24 @@ std::vector<Family> make_families(int n) {
       const double len = s.log_uniform(1e-3, 1e3);
       Vec o, d;
       switch (i % 4) {
-        case 0: o = {0, 0, s.uniform(-5, 5)}; d = {0, 0, 1}; break;                        // along the axis
-        case 1: o = {s.uniform(-2, 2), 0, s.uniform(-1, 1) * r}; d = {0, 0, 1}; break;     // parallel to it
-        case 2: { const Vec q = s.direction(); o = Vec{q.x, q.y, 0} * 3; d = unit(Vec{s.uniform(-1, 1), s.uniform(-1, 1), 0} - o); break; }
-        default: o = {0, 0, 0}; d = s.direction(); break;                                   // from the centre
+        case 0:
+          o = {0, 0, s.uniform(-5, 5)};
+          d = {0, 0, 1};
+          break;  // along the axis
+        case 1:
+          o = {s.uniform(-2, 2), 0, s.uniform(-1, 1) * r};
+          d = {0, 0, 1};
+          break;  // parallel to it
+        case 2: {
+          const Vec q = s.direction();
+          o = Vec{q.x, q.y, 0} * 3;
+          d = unit(Vec{s.uniform(-1, 1), s.uniform(-1, 1), 0} - o);
+          break;
+        }
+        default:
+          o = {0, 0, 0};
+          d = s.direction();
+          break;  // from the centre
       }
       f.rays.push_back(make_case(R, r, o, d * len));
     }
@@ -185,8 +198,8 @@ Metrics measure(const Family& f, const ReferenceSet& ref, const RootFinder& solv
     const std::vector<ReferenceRoot>& want = ref.roots[k];
     double got[4];
     const int n = solve(c, got);
-    const double dlen = std::sqrt(c.direction[0] * c.direction[0] + c.direction[1] * c.direction[1] +
-                                  c.direction[2] * c.direction[2]);
+    const double dlen =
+        std::sqrt(c.direction[0] * c.direction[0] + c.direction[1] * c.direction[1] + c.direction[2] * c.direction[2]);
     const double r = c.minor;
     const double match_tol = 1e-6 * r / dlen;
     const double chord_tol = 1e-5 * r / dlen;

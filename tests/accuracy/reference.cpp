@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "accuracy/reference.h"
 
 #include <mpfr.h>
@@ -14,10 +15,22 @@ constexpr mpfr_prec_t kPrec = 768;
 // Small RAII wrapper so the polynomial code reads like arithmetic.
 class Mp {
  public:
-  Mp() { mpfr_init2(v_, kPrec); mpfr_set_zero(v_, 1); }
-  Mp(double x) { mpfr_init2(v_, kPrec); mpfr_set_d(v_, x, MPFR_RNDN); }  // NOLINT: implicit by design
-  Mp(const Mp& o) { mpfr_init2(v_, kPrec); mpfr_set(v_, o.v_, MPFR_RNDN); }
-  Mp& operator=(const Mp& o) { mpfr_set(v_, o.v_, MPFR_RNDN); return *this; }
+  Mp() {
+    mpfr_init2(v_, kPrec);
+    mpfr_set_zero(v_, 1);
+  }
+  Mp(double x) {
+    mpfr_init2(v_, kPrec);
+    mpfr_set_d(v_, x, MPFR_RNDN);
+  }  // NOLINT: implicit by design
+  Mp(const Mp& o) {
+    mpfr_init2(v_, kPrec);
+    mpfr_set(v_, o.v_, MPFR_RNDN);
+  }
+  Mp& operator=(const Mp& o) {
+    mpfr_set(v_, o.v_, MPFR_RNDN);
+    return *this;
+  }
   ~Mp() { mpfr_clear(v_); }
   mpfr_ptr get() { return v_; }
   mpfr_srcptr get() const { return v_; }
@@ -25,14 +38,42 @@ class Mp {
   long double to_ld() const { return mpfr_get_ld(v_, MPFR_RNDN); }
   int sign() const { return mpfr_sgn(v_); }
 
-  friend Mp operator+(const Mp& a, const Mp& b) { Mp r; mpfr_add(r.v_, a.v_, b.v_, MPFR_RNDN); return r; }
-  friend Mp operator-(const Mp& a, const Mp& b) { Mp r; mpfr_sub(r.v_, a.v_, b.v_, MPFR_RNDN); return r; }
-  friend Mp operator*(const Mp& a, const Mp& b) { Mp r; mpfr_mul(r.v_, a.v_, b.v_, MPFR_RNDN); return r; }
-  friend Mp operator/(const Mp& a, const Mp& b) { Mp r; mpfr_div(r.v_, a.v_, b.v_, MPFR_RNDN); return r; }
-  friend Mp operator-(const Mp& a) { Mp r; mpfr_neg(r.v_, a.v_, MPFR_RNDN); return r; }
+  friend Mp operator+(const Mp& a, const Mp& b) {
+    Mp r;
+    mpfr_add(r.v_, a.v_, b.v_, MPFR_RNDN);
+    return r;
+  }
+  friend Mp operator-(const Mp& a, const Mp& b) {
+    Mp r;
+    mpfr_sub(r.v_, a.v_, b.v_, MPFR_RNDN);
+    return r;
+  }
+  friend Mp operator*(const Mp& a, const Mp& b) {
+    Mp r;
+    mpfr_mul(r.v_, a.v_, b.v_, MPFR_RNDN);
+    return r;
+  }
+  friend Mp operator/(const Mp& a, const Mp& b) {
+    Mp r;
+    mpfr_div(r.v_, a.v_, b.v_, MPFR_RNDN);
+    return r;
+  }
+  friend Mp operator-(const Mp& a) {
+    Mp r;
+    mpfr_neg(r.v_, a.v_, MPFR_RNDN);
+    return r;
+  }
   friend bool operator<(const Mp& a, const Mp& b) { return mpfr_less_p(a.v_, b.v_); }
-  friend Mp abs(const Mp& a) { Mp r; mpfr_abs(r.v_, a.v_, MPFR_RNDN); return r; }
-  friend Mp sqrt(const Mp& a) { Mp r; mpfr_sqrt(r.v_, a.v_, MPFR_RNDN); return r; }
+  friend Mp abs(const Mp& a) {
+    Mp r;
+    mpfr_abs(r.v_, a.v_, MPFR_RNDN);
+    return r;
+  }
+  friend Mp sqrt(const Mp& a) {
+    Mp r;
+    mpfr_sqrt(r.v_, a.v_, MPFR_RNDN);
+    return r;
+  }
 
  private:
   mpfr_t v_;
@@ -71,7 +112,10 @@ Mp bracketed_root(const Poly& p, const Poly& dp, Mp a, Mp b, int sign_a) {
   for (int it = 0; it < 4000; ++it) {
     const Mp v = eval(p, x);
     if (v.sign() == 0) return x;
-    if (v.sign() == sign_a) a = x; else b = x;
+    if (v.sign() == sign_a)
+      a = x;
+    else
+      b = x;
     Mp next = x - v / eval(dp, x);
     if (!(a < next && next < b)) next = (a + b) * Mp(0.5);
     const Mp step = abs(next - x);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // High-precision reference roots for the accuracy harness: the real roots of
 // the torus quartic formed EXACTLY from the double inputs, found in MPFR at
 // 768 bits. No double-precision solver takes part.
@@ -14,8 +15,8 @@ struct RayCase {
 };
 
 struct ReferenceRoot {
-  double t;  // rounded to the nearest double
-  long double t_ld;  // spare precision for error measurement near the root
+  double t;           // rounded to the nearest double
+  long double t_ld;   // spare precision for error measurement near the root
   bool exact_double;  // part of an exact double root (tangent) of the quartic
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gtest assertions for the RTC book's "=" on tuples, colours and matrices,
 // which compares each component within kEpsilon and prints both on failure.
 #pragma once

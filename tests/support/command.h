@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs the built `toroid` binary (TOROID_BINARY) for end-to-end tests.
 #pragma once
 

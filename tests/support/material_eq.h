@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gtest assertion for the RTC book's "=" on materials: every field equal
 // (colours within kEpsilon, the same pattern object), printing the first
 // difference on failure.

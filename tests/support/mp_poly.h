@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // High-precision (MPFR) reference for the root-solver tests: builds
 // polynomials from chosen roots, tells whether their double coefficients are
 // exact, and refines the true roots of the double polynomial by Newton's
@@ -121,8 +122,7 @@ inline std::vector<double> reference_roots(const Poly& p, std::vector<double> ch
 }
 
 // Same count, ascending output, and |got - want| <= tol * max(1, |want|).
-inline ::testing::AssertionResult RootsMatch(const double* got, int n, const std::vector<double>& want,
-                                             double tol) {
+inline ::testing::AssertionResult RootsMatch(const double* got, int n, const std::vector<double>& want, double tol) {
   std::ostringstream os;
   os.precision(17);
   os << "got " << n << " roots {";

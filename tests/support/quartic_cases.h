@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Quartics shared by the Ferrari and Tianheng tests: one or more for every
 // branch of the Tianheng case table, and a seeded random sweep. Reference
 // roots are chosen exactly (dyadic roots give exact double coefficients) or
@@ -17,22 +18,21 @@ namespace toroid::testing {
 
 struct QuarticCase {
   std::string name;
-  Poly p;                       // a, b, c, d, e
-  std::vector<double> want;     // real roots with multiplicity, ascending
-  TianhengCase tianheng_case;   // the branch the paper's table assigns
-  bool multiple = false;        // has a multiple root (ill-conditioned)
+  Poly p;                      // a, b, c, d, e
+  std::vector<double> want;    // real roots with multiplicity, ascending
+  TianhengCase tianheng_case;  // the branch the paper's table assigns
+  bool multiple = false;       // has a multiple root (ill-conditioned)
 };
 
-inline QuarticCase from_roots(std::string name, double lead, std::vector<double> real,
-                              std::vector<ComplexPair> pairs, TianhengCase tc, bool multiple = false) {
+inline QuarticCase from_roots(std::string name, double lead, std::vector<double> real, std::vector<ComplexPair> pairs,
+                              TianhengCase tc, bool multiple = false) {
   QuarticCase q{std::move(name), poly_from_roots(lead, real, pairs), {}, tc, multiple};
   q.want = reference_roots(q.p, real);
   return q;
 }
 
 // Coefficients given directly; real roots refined from the guesses.
-inline QuarticCase from_coeffs(std::string name, std::vector<double> c, std::vector<double> guesses,
-                               TianhengCase tc) {
+inline QuarticCase from_coeffs(std::string name, std::vector<double> c, std::vector<double> guesses, TianhengCase tc) {
   QuarticCase q{std::move(name), Poly{std::move(c), false}, {}, tc, false};
   q.want = reference_roots(q.p, guesses);
   return q;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The book's test_shape(): a shape that records the last ray it was asked to
 // intersect (in its object space) and has the bounds of a unit cube.
 #pragma once

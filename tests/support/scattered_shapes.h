@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene of many shapes and random rays through it, for tests that check
 // the index's queries against the book's list of every intersection.
 #pragma once
@@ -23,8 +24,10 @@ inline std::vector<std::shared_ptr<Shape>> scattered_shapes() {
   std::vector<std::shared_ptr<Shape>> shapes;
   for (int i = 0; i < 120; ++i) {
     std::shared_ptr<Shape> s;
-    if (i % 2 == 0) s = std::make_shared<Sphere>();
-    else s = std::make_shared<Torus>(1.0, 0.3);
+    if (i % 2 == 0)
+      s = std::make_shared<Sphere>();
+    else
+      s = std::make_shared<Torus>(1.0, 0.3);
     const double k = size(rng);
     s->set_transform(translation(pos(rng), pos(rng), pos(rng)) * rotation_y(angle(rng)) * rotation_x(angle(rng)) *
                      scaling(k, k, k));

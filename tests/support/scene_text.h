@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scene text that loader tests start from. Their expected messages name
 // lines: the camera takes lines 1-7, the light the next three.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The soft-shadows bonus chapter's test helper sequence(...): a generator
 // that returns its numbers in turn, cyclically, to jitter area-light samples
 // predictably in tests.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // smooth-triangles.feature's Background, shared by the shape's tests and
 // the shading test that prepares its normal.
 #pragma once

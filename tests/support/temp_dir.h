@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A fresh, empty directory for a test's files, unique to the test run and
 // the given name, removed (with its contents) when the object goes.
 #pragma once

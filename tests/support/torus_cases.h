@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for the Torus shape's scenarios (shapes/torus_test.cpp and
 // render/torus_shading_test.cpp).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "textures/procedural.h"
 
 #include <algorithm>
@@ -99,7 +100,8 @@ Color sky_at(const Tuple& direction) {
     // Fields on the plane y = -1, fading into haze at the horizon.
     const double s = 1 / -d.y;
     const Tuple g = point(d.x * s, 0, d.z * s);
-    const bool odd = (static_cast<std::int64_t>(std::floor(g.x / 3)) + static_cast<std::int64_t>(std::floor(g.z / 3))) & 1;
+    const bool odd =
+        (static_cast<std::int64_t>(std::floor(g.x / 3)) + static_cast<std::int64_t>(std::floor(g.z / 3))) & 1;
     const Color field = mix(odd ? Color{0.10, 0.26, 0.04} : Color{0.20, 0.32, 0.05}, Color{0.30, 0.22, 0.08},
                             fbm(g * 0.7, 3, 51) - 0.25);
     return mix(field, Color{0.45, 0.52, 0.60}, smoothstep(4, 60, s));
@@ -153,7 +155,7 @@ Color doughnut_at(UvCoord uv) {
       const double half_length = 0.28, radius = 0.09;
       const double along_out = std::max(std::abs(along) - half_length, 0.0);
       if (along_out * along_out + across * across < radius * radius) {
-        static const Color colours[] = {{0.9, 0.9, 0.85}, {0.95, 0.75, 0.05}, {0.05, 0.35, 0.85},
+        static const Color colours[] = {{0.9, 0.9, 0.85},   {0.95, 0.75, 0.05}, {0.05, 0.35, 0.85},
                                         {0.10, 0.60, 0.15}, {0.55, 0.10, 0.60}, {0.90, 0.30, 0.02}};
         icing = colours[hash(iu, iv, 4, 111) % 6];
       }
@@ -188,7 +190,8 @@ Canvas doughnut(int width, int height) { return paint(width, height, doughnut_at
 
 void write_scene_textures(const std::filesystem::path& dir, int size) {
   write_image(planet(2 * size, size), (dir / "earthmap1k.ppm").string());
-  for (const CubeFace f : {CubeFace::Left, CubeFace::Right, CubeFace::Front, CubeFace::Back, CubeFace::Up, CubeFace::Down})
+  for (const CubeFace f :
+       {CubeFace::Left, CubeFace::Right, CubeFace::Front, CubeFace::Back, CubeFace::Up, CubeFace::Down})
     write_image(sky_face(f, size), (dir / sky_face_file(f)).string());
   write_image(doughnut(2 * size, size), (dir / "doughnut.png").string());
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Procedural textures for the texture-mapped scenes: stand-ins for the
 // images that the RTC scenes name but do not ship (earth.yml's
 // earthmap1k.ppm, skybox.yml's six faces), and the doughnut icing of

@@ -1,11 +1,12 @@
+// SPDX-License-Identifier: Apache-2.0
 // Axis-aligned bounding boxes (RTC bonus chapter "Bounding boxes and hierarchies").
 #pragma once
 
 #include <limits>
 #include <utility>
 
-#include "toroid/math/matrix.h"
 #include "toroid/core/ray.h"
+#include "toroid/math/matrix.h"
 
 namespace toroid {
 

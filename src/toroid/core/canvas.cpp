@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/core/canvas.h"
 
 #include <algorithm>
@@ -12,9 +13,7 @@ Canvas::Canvas(int width, int height)
 
 namespace {
 
-int to_byte(double component) {
-  return static_cast<int>(std::lround(std::clamp(component, 0.0, 1.0) * 255.0));
-}
+int to_byte(double component) { return static_cast<int>(std::lround(std::clamp(component, 0.0, 1.0) * 255.0)); }
 
 constexpr std::size_t kMaxPpmLine = 70;
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A width x height grid of linear colours (RTC chapter 2) and its PPM form.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // canvas.feature
 #include "toroid/core/canvas.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Intersections of a ray with shapes, and the hit (RTC chapters 5 and 6).
 #pragma once
 

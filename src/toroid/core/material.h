@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Phong material (RTC chapter 6) with reflection and refraction (chapter 11).
 #pragma once
 

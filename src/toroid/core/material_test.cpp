@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // materials.feature: the defaults (the lighting scenarios are in lighting_test.cpp).
 #include "toroid/core/material.h"
 

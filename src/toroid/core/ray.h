@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A ray origin + t * direction. The direction is not assumed to be of unit
 // length: transforming a ray into object space scales it, and t stays valid.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // rays.feature
 #include "toroid/core/ray.h"
 

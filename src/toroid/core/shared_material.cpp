@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/core/shared_material.h"
 
 #include <utility>
@@ -19,7 +20,8 @@ SharedMaterial::SharedMaterial(const SharedMaterial& other) noexcept : block_(ot
   if (block_ != default_block()) block_->holders.fetch_add(1, std::memory_order_relaxed);
 }
 
-SharedMaterial::SharedMaterial(SharedMaterial&& other) noexcept : block_(std::exchange(other.block_, default_block())) {}
+SharedMaterial::SharedMaterial(SharedMaterial&& other) noexcept
+    : block_(std::exchange(other.block_, default_block())) {}
 
 SharedMaterial& SharedMaterial::operator=(SharedMaterial other) noexcept {
   std::swap(block_, other.block_);

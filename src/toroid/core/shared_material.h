@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a shape holds of its material: a counted reference to an immutable
 // Material, one pointer wide. std::shared_ptr takes two (16 bytes); a scene
 // may hold many thousands of shapes, and a torus with make_shared's control

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/core/shared_material.h"
 
 #include <gtest/gtest.h>
@@ -55,7 +56,7 @@ TEST(SharedMaterial, AssignmentReleasesTheOldBlockAndTakesTheNew) {
   EXPECT_EQ(a.use_count(), 2u);
   EXPECT_EQ(b_copy.use_count(), 1u);
   const SharedMaterial& same = b;  // through a reference: clang warns on a plain b = b
-  b = same;                         // self-assignment keeps the block
+  b = same;                        // self-assignment keeps the block
   EXPECT_EQ(b->diffuse, 0.3);
   EXPECT_EQ(a.use_count(), 2u);
 }

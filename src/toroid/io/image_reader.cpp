@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/io/image_reader.h"
 #include "toroid/io/srgb.h"
 
@@ -64,8 +65,8 @@ class PpmScanner {
     if (ec != std::errc() || end != w.data() + w.size())
       fail(word_line_, "expected " + what + " (a whole number), got '" + printable(w) + "'");
     if (v < min || v > max)
-      fail(word_line_, what + " " + std::to_string(v) + " is out of range " + std::to_string(min) + ".." +
-                           std::to_string(max));
+      fail(word_line_,
+           what + " " + std::to_string(v) + " is out of range " + std::to_string(min) + ".." + std::to_string(max));
     return v;
   }
 
@@ -110,8 +111,8 @@ std::vector<std::uint16_t> plain_samples(PpmScanner& in, int width, int height, 
     unsigned long v = 0;
     const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
     if (ec != std::errc() || end != w.data() + w.size())
-      in.fail(in.word_line(), "expected a whole number for the " + sample_name(samples.size(), width) + ", got '" +
-                                  printable(w) + "'");
+      in.fail(in.word_line(),
+              "expected a whole number for the " + sample_name(samples.size(), width) + ", got '" + printable(w) + "'");
     if (v > maxval)
       in.fail(in.word_line(), "value " + std::to_string(v) + " for the " + sample_name(samples.size(), width) +
                                   " exceeds the maximum value " + std::to_string(maxval));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading images into canvases (texture maps): the book's PPM (plain P3 and
 // raw P6) and PNG (libpng).
 //

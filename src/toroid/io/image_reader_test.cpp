@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // canvas.feature (texture mapping bonus chapter): canvas_from_ppm; then P6,
 // PNG and the errors (beyond the book).
 #include "toroid/io/image_reader.h"
@@ -143,7 +144,7 @@ TEST(CanvasFromPpm, ErrorsNameTheSourceAndLine) {
 TEST(ReadImage, SrgbDecodingInvertsTheWritersEncoding) {
   EXPECT_EQ(srgb8_to_linear(0), 0.0);
   EXPECT_EQ(srgb8_to_linear(255), 1.0);
-  EXPECT_NEAR(srgb8_to_linear(188), 0.5029, 1e-4);  // linear_to_srgb8(0.5) == 188
+  EXPECT_NEAR(srgb8_to_linear(188), 0.5029, 1e-4);            // linear_to_srgb8(0.5) == 188
   EXPECT_NEAR(srgb8_to_linear(3), 3 / 255.0 / 12.92, 1e-15);  // the linear segment
   for (int code = 0; code < 256; ++code) {
     EXPECT_EQ(linear_to_srgb8(srgb8_to_linear(static_cast<unsigned char>(code))), code);
@@ -170,7 +171,7 @@ TEST(ReadImage, PngAndPpmFilesReadBackWhatWriteImageWrote) {
         // PNG: the sRGB code written decodes to the exact code's value.
         if (std::string(name) == "c.png") {
           EXPECT_APPROX(got, (Color{srgb8_to_linear(linear_to_srgb8(want.r)), srgb8_to_linear(linear_to_srgb8(want.g)),
-                                   srgb8_to_linear(linear_to_srgb8(want.b))}));
+                                    srgb8_to_linear(linear_to_srgb8(want.b))}));
         }
         EXPECT_TRUE(approx_equal(got, want, 0.01)) << x << ", " << y << ": " << got;
       }
@@ -191,7 +192,8 @@ TEST(ReadImage, ErrorsNameTheFile) {
     std::ofstream(dir.file(name), std::ios::binary) << bytes;
     return dir.file(name);
   };
-  EXPECT_EQ(error_of(dir.file("missing.png")), "cannot read '" + dir.file("missing.png") + "': No such file or directory");
+  EXPECT_EQ(error_of(dir.file("missing.png")),
+            "cannot read '" + dir.file("missing.png") + "': No such file or directory");
   EXPECT_EQ(error_of(dir.path().string()), "cannot read '" + dir.path().string() + "': it is a directory");
   const std::string empty = write("empty.ppm", "");
   EXPECT_EQ(error_of(empty), empty + ": empty file: not a PPM or PNG image");

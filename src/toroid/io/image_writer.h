@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writing a canvas to disk: PNG (8-bit sRGB) or the book's plain PPM.
 #pragma once
 

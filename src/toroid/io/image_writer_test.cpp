@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/io/image_writer.h"
 #include "toroid/io/srgb.h"
 
@@ -150,7 +151,8 @@ TEST(ImageWriter, CheckingNamesWhatCannotBeWritten) {
   EXPECT_EQ(check_error(nodir), "cannot write '" + nodir + "': folder '" + (d / "nodir").string() + "' does not exist");
   std::ofstream(d / "file") << "x";
   const std::string under_file = (d / "file" / "x.png").string();
-  EXPECT_EQ(check_error(under_file), "cannot write '" + under_file + "': '" + (d / "file").string() + "' is not a folder");
+  EXPECT_EQ(check_error(under_file),
+            "cannot write '" + under_file + "': '" + (d / "file").string() + "' is not a folder");
   fs::create_directories(d / "dir.png");
   const std::string dir = (d / "dir.png").string();
   EXPECT_EQ(check_error(dir), "cannot write '" + dir + "': it is a folder");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading one number from a word of text (OBJ records, `toroid intersect`
 // lines), with the reason when it is not a usable one.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The text format of `toroid intersect`: one ray per line, "ox oy oz dx dy dz".
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/io/srgb.h"
 
 #include <algorithm>
@@ -57,8 +58,7 @@ Encoding make_encoding() {
   e.boundary[255] = INFINITY;
   for (int i = 0; i < kBuckets; ++i) {
     const double start = static_cast<double>(i) / kBuckets;
-    e.code_at_bucket[i] =
-        static_cast<unsigned char>(std::upper_bound(b.begin(), b.end(), start) - b.begin());
+    e.code_at_bucket[i] = static_cast<unsigned char>(std::upper_bound(b.begin(), b.end(), start) - b.begin());
   }
   return e;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sRGB transfer function for 8-bit images: PNG output encodes with it,
 // PNG textures decode with it.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An affine 4x4 matrix stored as its top three rows (the bottom row is
 // always 0 0 0 1): 96 bytes instead of 128, and a multiply that skips the
 // row and the terms that are known to be 0 or 1. Products are summed in the
@@ -30,7 +31,9 @@ struct Affine {
   // Always inlined: every ray goes through it into object space, and
   // link-time optimisation otherwise calls it out of line from the largest
   // callers.
-  [[gnu::always_inline]] constexpr Tuple operator*(const Tuple& t) const { return {row(0, t), row(1, t), row(2, t), t.w}; }
+  [[gnu::always_inline]] constexpr Tuple operator*(const Tuple& t) const {
+    return {row(0, t), row(1, t), row(2, t), t.w};
+  }
 
   // One component of (*this) * t, for callers that need only one (a
   // plane's height).

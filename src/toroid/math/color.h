@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Linear RGB colour; components are unbounded until the canvas clamps them.
 #pragma once
 

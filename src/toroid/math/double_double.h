@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Double-double arithmetic: a value as an unevaluated sum hi + lo of two
 // doubles, about 106 bits. Built on the error-free transformations TwoSum
 // (Knuth) and TwoProduct (one fused multiply-add). The torus solver uses it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Deterministic pseudo-random numbers from keys: the renderer's sample
 // jitter and the area lights' jitter, so images do not depend on threads.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Square matrices of size 2, 3 and 4 as in The Ray Tracer Challenge. Only the
 // 4x4 ones are used by the renderer; the smaller ones exist for the cofactor
 // expansion that the book's inverse is built from.

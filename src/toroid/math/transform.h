@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Affine transforms as 4x4 matrices (RTC chapter 4 and 7).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tuples as in The Ray Tracer Challenge: points (w = 1) and vectors (w = 0) in
 // one type, so that a 4x4 matrix transforms both with the same multiply.
 #pragma once
@@ -10,9 +11,7 @@ namespace toroid {
 // The comparison tolerance of the RTC book's scenarios.
 inline constexpr double kEpsilon = 1e-5;
 
-inline bool approx_equal(double a, double b, double eps = kEpsilon) {
-  return std::abs(a - b) < eps;
-}
+inline bool approx_equal(double a, double b, double eps = kEpsilon) { return std::abs(a - b) < eps; }
 
 struct Tuple {
   double x = 0, y = 0, z = 0, w = 0;
@@ -25,20 +24,14 @@ struct Tuple {
 constexpr Tuple point(double x, double y, double z) { return {x, y, z, 1.0}; }
 constexpr Tuple vector(double x, double y, double z) { return {x, y, z, 0.0}; }
 
-constexpr Tuple operator+(const Tuple& a, const Tuple& b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w};
-}
-constexpr Tuple operator-(const Tuple& a, const Tuple& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w};
-}
+constexpr Tuple operator+(const Tuple& a, const Tuple& b) { return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w}; }
+constexpr Tuple operator-(const Tuple& a, const Tuple& b) { return {a.x - b.x, a.y - b.y, a.z - b.z, a.w - b.w}; }
 constexpr Tuple operator-(const Tuple& a) { return {-a.x, -a.y, -a.z, -a.w}; }
 constexpr Tuple operator*(const Tuple& a, double s) { return {a.x * s, a.y * s, a.z * s, a.w * s}; }
 constexpr Tuple operator*(double s, const Tuple& a) { return a * s; }
 constexpr Tuple operator/(const Tuple& a, double s) { return {a.x / s, a.y / s, a.z / s, a.w / s}; }
 
-constexpr double dot(const Tuple& a, const Tuple& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
-}
+constexpr double dot(const Tuple& a, const Tuple& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
 // Cross product of the xyz parts; the result is a vector.
 constexpr Tuple cross(const Tuple& a, const Tuple& b) {
   return vector(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);

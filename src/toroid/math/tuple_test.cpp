@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // tuples.feature (tuples, vectors, points, colours, reflection)
 #include "toroid/math/tuple.h"
 

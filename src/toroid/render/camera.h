@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: Apache-2.0
 // A pinhole camera (RTC chapter 7): the canvas lies one unit in front of the
 // eye, along -z of the camera's space.
 #pragma once
 
-#include "toroid/math/matrix.h"
 #include "toroid/core/canvas.h"
 #include "toroid/core/ray.h"
+#include "toroid/math/matrix.h"
 
 namespace toroid {
 

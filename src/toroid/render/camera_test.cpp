@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // camera.feature
 #include "toroid/render/camera.h"
 

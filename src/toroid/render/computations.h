@@ -1,11 +1,12 @@
+// SPDX-License-Identifier: Apache-2.0
 // The state of a hit that shading needs (RTC chapters 7, 8 and 11).
 #pragma once
 
 #include <limits>
 
-#include "toroid/math/tuple.h"
 #include "toroid/core/intersection.h"
 #include "toroid/core/ray.h"
+#include "toroid/math/tuple.h"
 
 namespace toroid {
 
@@ -28,9 +29,9 @@ inline constexpr double kBiasPerMagnitude = 16 * std::numeric_limits<double>::ep
 struct Computations {
   double t = 0;
   const Shape* object = nullptr;
-  Tuple point;      // on the surface
-  Tuple eyev;       // unit, towards the eye
-  Tuple normalv;    // unit, facing the eye (flipped when inside)
+  Tuple point;    // on the surface
+  Tuple eyev;     // unit, towards the eye
+  Tuple normalv;  // unit, facing the eye (flipped when inside)
   bool inside = false;
   Tuple over_point;   // point + normalv * surface_bias: start of shadow and reflection rays
   Tuple under_point;  // point - normalv * surface_bias: start of refraction rays

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // intersections.feature: prepare_computations and schlick.
 #include "toroid/render/computations.h"
 
@@ -106,8 +107,7 @@ TEST(Intersections, FindingN1AndN2AtVariousIntersections) {
     int index;
     double n1, n2;
   };
-  const Example examples[] = {{0, 1.0, 1.5}, {1, 1.5, 2.0}, {2, 2.0, 2.5},
-                              {3, 2.5, 2.5}, {4, 2.5, 1.5}, {5, 1.5, 1.0}};
+  const Example examples[] = {{0, 1.0, 1.5}, {1, 1.5, 2.0}, {2, 2.0, 2.5}, {3, 2.5, 2.5}, {4, 2.5, 1.5}, {5, 1.5, 1.0}};
   for (const Example& e : examples) {
     SCOPED_TRACE(::testing::Message() << "index " << e.index);
     const Computations comps = prepare_computations(xs[e.index], r, xs);
@@ -125,8 +125,10 @@ std::pair<double, double> book_n1_n2(const Intersection& hit, const Intersection
     const bool is_hit = x.t == hit.t && x.object == hit.object;
     if (is_hit) n1 = containers.empty() ? 1.0 : containers.back()->material().refractive_index;
     const auto found = std::find(containers.begin(), containers.end(), x.object);
-    if (found != containers.end()) containers.erase(found);
-    else containers.push_back(x.object);
+    if (found != containers.end())
+      containers.erase(found);
+    else
+      containers.push_back(x.object);
     if (is_hit) {
       n2 = containers.empty() ? 1.0 : containers.back()->material().refractive_index;
       break;
@@ -247,7 +249,8 @@ TEST(SurfaceBias, ExceedsTheRoundingOfFarCoordinates) {
 // A top-level shape reads its own inverse; below a group the world-to-object
 // matrix is the product. An identity group changes nothing, bit for bit.
 TEST(SurfaceBias, IsTheSameAtTheTopLevelAndBelowAnIdentityGroup) {
-  for (const Matrix4& m : {scaling(2, 0.5, 3), rotation_x(0.7) * shearing(0.2, 0, 0.1, 0, 0, 0.3), translation(1, 2, 3)}) {
+  for (const Matrix4& m :
+       {scaling(2, 0.5, 3), rotation_x(0.7) * shearing(0.2, 0, 0.1, 0, 0, 0.3), translation(1, 2, 3)}) {
     Sphere alone;
     alone.set_transform(m);
     auto group = std::make_shared<Group>();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The largest image toroid renders, checked before the canvas is allocated
 // (a canvas holds three doubles a pixel: the pixel limit is 1.5 GiB).
 #pragma once

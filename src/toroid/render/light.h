@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Light sources: the point light (RTC chapter 6) and the rectangular area
 // light of the bonus chapter "Soft shadows".
 #pragma once

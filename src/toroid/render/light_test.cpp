@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // lights.feature, with the soft-shadows bonus chapter's scenarios (community
 // transcription in ../shared/rtc-features/bonus_community/).
 #include "toroid/render/light.h"
@@ -26,9 +27,8 @@ TEST(Lights, PointLightsEvaluateTheLightIntensityAtAGivenPoint) {
     Tuple pt;
     double result;
   } examples[] = {
-      {point(0, 1.0001, 0), 1.0},  {point(-1.0001, 0, 0), 1.0}, {point(0, 0, -1.0001), 1.0},
-      {point(0, 0, 1.0001), 0.0},  {point(1.0001, 0, 0), 0.0},  {point(0, -1.0001, 0), 0.0},
-      {point(0, 0, 0), 0.0},
+      {point(0, 1.0001, 0), 1.0}, {point(-1.0001, 0, 0), 1.0}, {point(0, 0, -1.0001), 1.0}, {point(0, 0, 1.0001), 0.0},
+      {point(1.0001, 0, 0), 0.0}, {point(0, -1.0001, 0), 0.0}, {point(0, 0, 0), 0.0},
   };
   for (const auto& e : examples) {
     SCOPED_TRACE(::testing::PrintToString(e.pt));
@@ -37,7 +37,9 @@ TEST(Lights, PointLightsEvaluateTheLightIntensityAtAGivenPoint) {
 }
 
 // Given corner <- point(0, 0, 0), v1 <- vector(2, 0, 0), v2 <- vector(0, 0, 1).
-AreaLight book_area_light() { return AreaLight(point(0, 0, 0), vector(2, 0, 0), 4, vector(0, 0, 1), 2, Color{1, 1, 1}); }
+AreaLight book_area_light() {
+  return AreaLight(point(0, 0, 0), vector(2, 0, 0), 4, vector(0, 0, 1), 2, Color{1, 1, 1});
+}
 
 TEST(Lights, CreatingAnAreaLight) {
   const Tuple corner = point(0, 0, 0);
@@ -72,7 +74,7 @@ TEST(Lights, TheAreaLightIntensityFunction) {
     Tuple pt;
     double result;
   } examples[] = {
-      {point(0, 0, 2), 0.0},  {point(1, -1, 2), 0.25},     {point(1.5, 0, 2), 0.5},
+      {point(0, 0, 2), 0.0},        {point(1, -1, 2), 0.25}, {point(1.5, 0, 2), 0.5},
       {point(1.25, 1.25, 3), 0.75}, {point(0, 0, -2), 1.0},
   };
   for (const auto& e : examples) {

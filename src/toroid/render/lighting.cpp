@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/render/lighting.h"
 
 #include <cmath>
@@ -32,8 +33,8 @@ Color diffuse_specular(const Material& m, const Color& effective, const Color& i
 
 }  // namespace
 
-Color lighting(const Material& m, const Shape& object, const PointLight& light, const Tuple& point,
-               const Tuple& eyev, const Tuple& normalv, double light_intensity) {
+Color lighting(const Material& m, const Shape& object, const PointLight& light, const Tuple& point, const Tuple& eyev,
+               const Tuple& normalv, double light_intensity) {
   return lighting_towards(m, object, light, point, normalize(light.position - point), eyev, normalv, light_intensity);
 }
 
@@ -45,8 +46,8 @@ Color lighting_towards(const Material& m, const Shape& object, const PointLight&
   return ambient + diffuse_specular(m, effective, light.intensity, lightv, eyev, normalv) * light_intensity;
 }
 
-Color lighting(const Material& m, const Shape& object, const AreaLight& light, const Tuple& point,
-               const Tuple& eyev, const Tuple& normalv, double light_intensity) {
+Color lighting(const Material& m, const Shape& object, const AreaLight& light, const Tuple& point, const Tuple& eyev,
+               const Tuple& normalv, double light_intensity) {
   const Color effective = effective_color(m, object, point, light.intensity);
   const Color ambient = effective * m.ambient;
   if (light_intensity <= 0) return ambient;

@@ -1,11 +1,12 @@
+// SPDX-License-Identifier: Apache-2.0
 // Phong reflection (RTC chapters 6, 8 and 10, and the bonus chapter's area
 // lights).
 #pragma once
 
+#include "toroid/core/material.h"
 #include "toroid/math/color.h"
 #include "toroid/math/tuple.h"
 #include "toroid/render/light.h"
-#include "toroid/core/material.h"
 
 namespace toroid {
 

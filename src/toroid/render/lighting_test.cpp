@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // materials.feature: lighting().
 #include "toroid/render/lighting.h"
 

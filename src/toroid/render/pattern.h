@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Patterns (RTC chapter 10): colours as a function of a point in pattern
 // space. A pattern has its own transform, applied after the shape's.
 #pragma once

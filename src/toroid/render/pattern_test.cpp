@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // patterns.feature
 #include "toroid/render/pattern.h"
 

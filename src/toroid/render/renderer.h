@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Parallel rendering of a camera's view of a world: 16x16 tiles on oneTBB,
 // stratified, deterministically jittered supersampling.
 #pragma once
@@ -6,8 +7,8 @@
 #include <cstdint>
 #include <functional>
 
-#include "toroid/render/camera.h"
 #include "toroid/core/canvas.h"
+#include "toroid/render/camera.h"
 #include "toroid/render/world.h"
 
 namespace toroid {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The index's list up to the hit gives the refraction the book's list gives.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // smooth-triangles.feature: the scenario that goes through prepare_computations.
 #include <gtest/gtest.h>
 

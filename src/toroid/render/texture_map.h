@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Texture mapping (RTC bonus chapter): patterns that colour a point by a uv
 // pattern at the point's (u, v) under a mapping.
 #pragma once

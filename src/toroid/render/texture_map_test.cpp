@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Texture mapping bonus chapter: texture_map and cube_map patterns; then a
 // texture on a torus (beyond the book).
 #include "toroid/render/texture_map.h"
@@ -35,27 +36,27 @@ TEST(TextureMap, UsingATextureMapPatternWithASphericalMap) {
 TEST(TextureMap, FindingTheColorsOnAMappedCube) {
   const Color red{1, 0, 0}, yellow{1, 1, 0}, brown{1, 0.5, 0}, green{0, 1, 0}, cyan{0, 1, 1}, blue{0, 0, 1},
       purple{1, 0, 1};
-  const CubeMapPattern pattern(std::make_shared<UvAlignCheck>(yellow, cyan, red, blue, brown),    // left
-                               std::make_shared<UvAlignCheck>(cyan, red, yellow, brown, green),   // front
-                               std::make_shared<UvAlignCheck>(red, yellow, purple, green, white), // right
-                               std::make_shared<UvAlignCheck>(green, purple, cyan, white, blue),  // back
-                               std::make_shared<UvAlignCheck>(brown, cyan, purple, red, yellow),  // up
-                               std::make_shared<UvAlignCheck>(purple, brown, green, blue, white)); // down
+  const CubeMapPattern pattern(std::make_shared<UvAlignCheck>(yellow, cyan, red, blue, brown),      // left
+                               std::make_shared<UvAlignCheck>(cyan, red, yellow, brown, green),     // front
+                               std::make_shared<UvAlignCheck>(red, yellow, purple, green, white),   // right
+                               std::make_shared<UvAlignCheck>(green, purple, cyan, white, blue),    // back
+                               std::make_shared<UvAlignCheck>(brown, cyan, purple, red, yellow),    // up
+                               std::make_shared<UvAlignCheck>(purple, brown, green, blue, white));  // down
   const struct {
     const char* id;
     Tuple p;
     Color c;
   } examples[] = {
-      {"L1", point(-1, 0, 0), yellow},      {"L2", point(-1, 0.9, -0.9), cyan},   {"L3", point(-1, 0.9, 0.9), red},
-      {"L4", point(-1, -0.9, -0.9), blue},  {"L5", point(-1, -0.9, 0.9), brown},  {"F1", point(0, 0, 1), cyan},
-      {"F2", point(-0.9, 0.9, 1), red},     {"F3", point(0.9, 0.9, 1), yellow},   {"F4", point(-0.9, -0.9, 1), brown},
-      {"F5", point(0.9, -0.9, 1), green},   {"R1", point(1, 0, 0), red},          {"R2", point(1, 0.9, 0.9), yellow},
-      {"R3", point(1, 0.9, -0.9), purple},  {"R4", point(1, -0.9, 0.9), green},   {"R5", point(1, -0.9, -0.9), white},
-      {"B1", point(0, 0, -1), green},       {"B2", point(0.9, 0.9, -1), purple},  {"B3", point(-0.9, 0.9, -1), cyan},
-      {"B4", point(0.9, -0.9, -1), white},  {"B5", point(-0.9, -0.9, -1), blue},  {"U1", point(0, 1, 0), brown},
-      {"U2", point(-0.9, 1, -0.9), cyan},   {"U3", point(0.9, 1, -0.9), purple},  {"U4", point(-0.9, 1, 0.9), red},
-      {"U5", point(0.9, 1, 0.9), yellow},   {"D1", point(0, -1, 0), purple},      {"D2", point(-0.9, -1, 0.9), brown},
-      {"D3", point(0.9, -1, 0.9), green},   {"D4", point(-0.9, -1, -0.9), blue},  {"D5", point(0.9, -1, -0.9), white},
+      {"L1", point(-1, 0, 0), yellow},     {"L2", point(-1, 0.9, -0.9), cyan},  {"L3", point(-1, 0.9, 0.9), red},
+      {"L4", point(-1, -0.9, -0.9), blue}, {"L5", point(-1, -0.9, 0.9), brown}, {"F1", point(0, 0, 1), cyan},
+      {"F2", point(-0.9, 0.9, 1), red},    {"F3", point(0.9, 0.9, 1), yellow},  {"F4", point(-0.9, -0.9, 1), brown},
+      {"F5", point(0.9, -0.9, 1), green},  {"R1", point(1, 0, 0), red},         {"R2", point(1, 0.9, 0.9), yellow},
+      {"R3", point(1, 0.9, -0.9), purple}, {"R4", point(1, -0.9, 0.9), green},  {"R5", point(1, -0.9, -0.9), white},
+      {"B1", point(0, 0, -1), green},      {"B2", point(0.9, 0.9, -1), purple}, {"B3", point(-0.9, 0.9, -1), cyan},
+      {"B4", point(0.9, -0.9, -1), white}, {"B5", point(-0.9, -0.9, -1), blue}, {"U1", point(0, 1, 0), brown},
+      {"U2", point(-0.9, 1, -0.9), cyan},  {"U3", point(0.9, 1, -0.9), purple}, {"U4", point(-0.9, 1, 0.9), red},
+      {"U5", point(0.9, 1, 0.9), yellow},  {"D1", point(0, -1, 0), purple},     {"D2", point(-0.9, -1, 0.9), brown},
+      {"D3", point(0.9, -1, 0.9), green},  {"D4", point(-0.9, -1, -0.9), blue}, {"D5", point(0.9, -1, -0.9), white},
   };
   for (const auto& e : examples) {
     SCOPED_TRACE(e.id);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Torus shape in a world: shadows, refraction through the hole, and
 // the inside of a partial torus seen through its open edge.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mappings from a point in pattern space to (u, v) in [0, 1] x [0, 1] (RTC
 // bonus chapter "Texture Mapping"), plus the torus mapping, and the inverse
 // maps that procedural textures are painted with.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Texture mapping bonus chapter: spherical, planar, cylindrical and cube
 // mappings; then the torus mapping and the inverse maps (beyond the book).
 #include "toroid/render/uv_mapping.h"

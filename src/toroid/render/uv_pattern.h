@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Two-dimensional patterns (RTC bonus chapter "Texture Mapping"): a colour
 // for each (u, v) in [0, 1] x [0, 1], u to the right, v upwards. A mapping
 // (uv_mapping.h) turns a point on a shape into (u, v); texture_map.h joins the
@@ -6,8 +7,8 @@
 
 #include <memory>
 
-#include "toroid/math/color.h"
 #include "toroid/core/canvas.h"
+#include "toroid/math/color.h"
 
 namespace toroid {
 

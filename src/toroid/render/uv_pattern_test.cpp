@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Texture mapping bonus chapter: uv_checkers, uv_align_check, uv_image.
 #include "toroid/render/uv_pattern.h"
 

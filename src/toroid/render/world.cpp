@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/render/world.h"
 
 #include <cmath>
@@ -133,8 +134,7 @@ Color shade_hit(const World& world, const Computations& comps, int remaining) {
     // A light behind the surface lights nothing, shadowed or not (lighting's
     // own test, on the same vector): spare its shadow ray.
     const bool faces_light = dot(lightv, comps.normalv) >= 0;
-    const bool shadowed =
-        faces_light && shadow_ray_blocked(world, comps.over_point, lightv, distance, &light.position);
+    const bool shadowed = faces_light && shadow_ray_blocked(world, comps.over_point, lightv, distance, &light.position);
     surface += lighting_towards(m, *comps.object, light, comps.over_point, lightv, comps.eyev, comps.normalv,
                                 shadowed ? 0.0 : 1.0);
   }

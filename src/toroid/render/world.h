@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene: shapes and lights, and the recursive shading of rays (RTC
 // chapters 7, 8 and 11).
 #pragma once
@@ -6,11 +7,11 @@
 #include <memory>
 #include <vector>
 
+#include "toroid/core/intersection.h"
+#include "toroid/core/ray.h"
 #include "toroid/math/color.h"
 #include "toroid/render/computations.h"
-#include "toroid/core/intersection.h"
 #include "toroid/render/light.h"
-#include "toroid/core/ray.h"
 #include "toroid/shapes/shape_bvh.h"
 
 namespace toroid {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The world's index (index_objects) changes how rays find objects, never
 // what they see.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // world.feature
 #include "toroid/render/world.h"
 
@@ -29,9 +30,9 @@ bool contains_sphere(const World& w, const Matrix4& transform, const Material& m
   for (const auto& object : w.objects) {
     if (dynamic_cast<const Sphere*>(object.get()) == nullptr) continue;
     const Material& om = object->material();
-    if (approx_equal(object->transform(), transform) && approx_equal(om.color, m.color) &&
-        om.ambient == m.ambient && om.diffuse == m.diffuse && om.specular == m.specular &&
-        om.shininess == m.shininess && om.reflective == m.reflective && om.transparency == m.transparency &&
+    if (approx_equal(object->transform(), transform) && approx_equal(om.color, m.color) && om.ambient == m.ambient &&
+        om.diffuse == m.diffuse && om.specular == m.specular && om.shininess == m.shininess &&
+        om.reflective == m.reflective && om.transparency == m.transparency &&
         om.refractive_index == m.refractive_index && om.pattern == m.pattern)
       return true;
   }
@@ -400,9 +401,7 @@ TEST(WorldLighting, AnAreaLightCastsAnUmbraAndAPenumbra) {
     }
     EXPECT_GE(partial, 3);
     // The floor's colour follows: umbra darker than penumbra darker than lit.
-    const auto floor_color = [&](double x) {
-      return color_at(w, {point(x, 3, -3), normalize(vector(0, -3, 3))}).r;
-    };
+    const auto floor_color = [&](double x) { return color_at(w, {point(x, 3, -3), normalize(vector(0, -3, 3))}).r; };
     double penumbra_x = 0;
     for (double x = 0; x <= 5; x += 0.05)
       if (const double f = intensity_at(light, on_floor(x), w); f > 0.3 && f < 0.7) penumbra_x = x;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Real roots of a x^3 + b x^2 + c x + d = 0: Cardano with cube roots when
 // there is one real root, the trigonometric form when there are three, one
 // guarded Newton step per root on the original polynomial.
@@ -61,8 +62,7 @@ int solve_cubic(double a, double b, double c, double d, double roots[3]) {
     const double r = std::sqrt(-tp);
     const double cos_phi = std::clamp(-hq / (r * r * r), -1.0, 1.0);
     const double phi = std::acos(cos_phi);
-    for (int k = 0; k < 3; ++k)
-      roots[k] = 2 * r * std::cos((phi - 2 * std::numbers::pi * k) / 3) - B3;
+    for (int k = 0; k < 3; ++k) roots[k] = 2 * r * std::cos((phi - 2 * std::numbers::pi * k) / 3) - B3;
     n = 3;
   }
   for (int i = 0; i < n; ++i) roots[i] = polish(roots[i], B, C, D);

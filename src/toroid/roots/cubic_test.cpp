@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // solve_cubic against roots chosen exactly or refined with MPFR.
 #include <gtest/gtest.h>
 
@@ -35,8 +36,8 @@ TEST(SolveCubic, ThreeDistinctRealRoots) {
 }
 
 TEST(SolveCubic, OneRealRootAndAComplexPair) {
-  for (auto [x, z] : {std::pair{1.0, ComplexPair{0, 1}}, {-3.5, {2, 0.5}}, {0.0, {-1, 4}}, {1e3, {1, 1}},
-                      {1e-3, {10, 10}}}) {
+  for (auto [x, z] :
+       {std::pair{1.0, ComplexPair{0, 1}}, {-3.5, {2, 0.5}}, {0.0, {-1, 4}}, {1e3, {1, 1}}, {1e-3, {10, 10}}}) {
     const auto p = poly_from_roots(0.5, {x}, {z});
     double r[3];
     EXPECT_TRUE(RootsMatch(r, solve(p, r), reference_roots(p, {x}), kTolSimple)) << x;

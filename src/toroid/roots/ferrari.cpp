@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Textbook Ferrari: normalise, depress, take the dominant (largest) real root
 // of the resolvent cubic, split into two quadratics. No polishing: the
 // method's own numerical weaknesses are left visible (docs/torus.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // solve_quartic_ferrari on the shared quartics (every Tianheng branch, so
 // every kind of root multiplicity) and a random sweep, against the exact or
 // MPFR reference.

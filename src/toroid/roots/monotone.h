@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Root finding on a bracket where the function is monotone.
 #pragma once
 

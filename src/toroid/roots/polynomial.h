@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Real roots of polynomials up to degree four. Every solver writes the real
 // roots it finds in ascending order and returns their count.
 #pragma once

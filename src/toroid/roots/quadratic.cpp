@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Real roots of a x^2 + b x + c = 0 without catastrophic cancellation.
 #include <cmath>
 #include <utility>

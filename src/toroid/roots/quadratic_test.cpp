@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // solve_quadratic against roots chosen exactly or refined with MPFR.
 #include <gtest/gtest.h>
 

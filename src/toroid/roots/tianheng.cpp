@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The seed paper's closed form for the quartic, with its full case table.
 // Every formula is written for y = 4 a x + b, in which the quartic reads
 //   (y^2 - D)^2 = 4 (2 E y + F),
@@ -80,7 +81,8 @@ int solve_quartic_tianheng(double a, double b, double c, double d, double e, dou
   // rounding, so do it first (the only departure from the paper's recipe).
   const double big = std::max({std::fabs(a), std::fabs(b), std::fabs(c), std::fabs(d), std::fabs(e)});
   const int k = std::ilogb(big);
-  a = std::scalbn(a, -k), b = std::scalbn(b, -k), c = std::scalbn(c, -k), d = std::scalbn(d, -k), e = std::scalbn(e, -k);
+  a = std::scalbn(a, -k), b = std::scalbn(b, -k), c = std::scalbn(c, -k), d = std::scalbn(d, -k),
+  e = std::scalbn(e, -k);
   const TianhengQuantities q = tianheng_quantities(a, b, c, d, e);
   const double D = q.D, E = q.E, F = q.F, A = q.A, B = q.B, Delta = q.Delta;
   double y[4];

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The seed paper's closed-form quartic solver (after Fan Shengjin and
 // Shen Tianheng): its discriminant quantities and case table, exposed so that
 // tests can check which branch a polynomial takes. The solver itself is

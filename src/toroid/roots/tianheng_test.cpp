@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // solve_quartic_tianheng: every branch of the paper's case table is taken
 // (classify_tianheng) and its roots match the exact or MPFR reference.
 #include "toroid/roots/tianheng.h"
@@ -54,8 +55,8 @@ void check_branch(TianhengCase which) {
 TEST(Tianheng, Quantities) {
   // (x-1)(x-2)(x-3)(x-5) = x^4 - 11x^3 + 41x^2 - 61x + 30, by hand:
   const auto t = tianheng_quantities(1, -11, 41, -61, 30);
-  EXPECT_EQ(t.D, 3 * 121 - 8 * 41);                                      // 35
-  EXPECT_EQ(t.E, 1331 + 4 * -11 * 41 + 8 * 61);                          // 15
+  EXPECT_EQ(t.D, 3 * 121 - 8 * 41);                                            // 35
+  EXPECT_EQ(t.E, 1331 + 4 * -11 * 41 + 8 * 61);                                // 15
   EXPECT_EQ(t.F, 3 * 14641 + 16 * 1681 - 16 * 121 * 41 + 16 * 671 - 64 * 30);  // 259
   EXPECT_EQ(t.A, t.D * t.D - 3 * t.F);
   EXPECT_EQ(t.B, t.D * t.F - 9 * t.E * t.E);
@@ -88,9 +89,9 @@ TEST(Tianheng, Case3TwoDoubleRoots) {
 TEST(Tianheng, Case4OneDoubleRoot) {
   check_branch(TianhengCase::OneDoubleRoot);
   // AB > 0 gives four real roots, AB < 0 only the double root.
-  const auto four = tianheng_quantities(1, -8, 21, -22, 8);     // (x-1)^2 (x-2)(x-4)
+  const auto four = tianheng_quantities(1, -8, 21, -22, 8);  // (x-1)^2 (x-2)(x-4)
   EXPECT_GT(four.A * four.B, 0);
-  const auto two = tianheng_quantities(1, -2, 2, -2, 1);        // (x-1)^2 (x^2+1)
+  const auto two = tianheng_quantities(1, -2, 2, -2, 1);  // (x-1)^2 (x^2+1)
   EXPECT_LT(two.A * two.B, 0);
   EXPECT_EQ(classify_tianheng(two), TianhengCase::OneDoubleRoot);
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `add: camera`: the one camera of a scene.
 #include <numbers>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scene items that are not shapes, `add: camera` and `add: light`, each
 // with its builder (camera_builder.cpp, light_builders.cpp).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `add: light`: a point light (`at`) or, with `corner`, an area light (soft
 // shadows bonus chapter).
 #include "toroid/scene/item_builders.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the scene loader's parts share while one scene loads: the defines,
 // the reader that reports errors, counters that limit the work, and caches.
 // The parts are functions of a LoadState& (transforms, materials, patterns,
@@ -65,7 +66,7 @@ struct LoadState {
 // Limits that keep a mistaken (or hostile) scene from exhausting the stack,
 // memory or time; docs/errors.md lists them. Defines and YAML aliases can
 // repeat a group or a pattern inside itself, which multiplies the work.
-constexpr int kMaxNesting = 64;  // groups and CSG inside each other; defines extending defines
+constexpr int kMaxNesting = 64;              // groups and CSG inside each other; defines extending defines
 constexpr std::size_t kMaxShapes = 100'000;  // shapes made from YAML (meshes belong in OBJ files: not counted)
 constexpr std::size_t kMaxPatterns = 100'000;
 

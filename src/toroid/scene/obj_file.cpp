@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/scene/obj_file.h"
 
 #include <tiny_obj_loader.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Wavefront OBJ meshes (RTC chapter 15), read with tinyobjloader: vertices,
 // polygon faces (fan-triangulated as in the book), vertex normals (faces that
 // give them become smooth triangles) and named groups ("g" / "o").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // obj_file.feature, plus the loader's errors and its BVH.
 #include "toroid/scene/obj_file.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `pattern:` maps: one builder per `type`, and the uv patterns of `type: map`.
 #include <algorithm>
 #include <map>
@@ -45,7 +46,8 @@ Build builder_of_type(const SceneReader& r, ItemParams& p, std::span<const Named
   kind = r.name(type.need("a " + what), what + " type");
   const auto* b = find_builder<Build>(table, kind);
   if (!b)
-    r.fail(type.value(), "unknown " + what + " type '" + kind + "'" + suggestion(kind, builder_names<Build>(table)) + hint);
+    r.fail(type.value(),
+           "unknown " + what + " type '" + kind + "'" + suggestion(kind, builder_names<Build>(table)) + hint);
   return b->build;
 }
 
@@ -144,13 +146,17 @@ std::shared_ptr<Pattern> map_pattern(LoadState& state, ItemParams& p, const std:
   p.report_unused("a '" + mapping + "' map pattern");
   auto uv = uv_pattern(state, uv_param.need("a map pattern"));
   UvMapping f;
-  if (mapping == "spherical") f = spherical_map;
-  else if (mapping == "planar") f = planar_map;
-  else if (mapping == "cylindrical") f = cylindrical_map;
+  if (mapping == "spherical")
+    f = spherical_map;
+  else if (mapping == "planar")
+    f = planar_map;
+  else if (mapping == "cylindrical")
+    f = cylindrical_map;
   else {
     if ((!major || !minor) && !state.material_torus)
-      r.fail(m.value(), "mapping 'torus' needs the radii of the torus: use it in the material of a torus, or give "
-                        "'major' and 'minor'");
+      r.fail(m.value(),
+             "mapping 'torus' needs the radii of the torus: use it in the material of a torus, or give "
+             "'major' and 'minor'");
     const double R = major ? major.positive("'major'") : state.material_torus->major;
     const double rr = minor ? minor.positive("'minor'") : state.material_torus->minor;
     f = [R, rr](const Tuple& pt) { return toroidal_map(R, rr, pt); };
@@ -159,9 +165,12 @@ std::shared_ptr<Pattern> map_pattern(LoadState& state, ItemParams& p, const std:
 }
 
 constexpr NamedBuilder<PatternBuild> kPatterns[] = {
-    {"stripes", two_color_pattern<StripePattern>}, {"gradient", two_color_pattern<GradientPattern>},
-    {"rings", two_color_pattern<RingPattern>},     {"checkers", two_color_pattern<CheckersPattern>},
-    {"blended", blended},                          {"map", map_pattern},
+    {"stripes", two_color_pattern<StripePattern>},
+    {"gradient", two_color_pattern<GradientPattern>},
+    {"rings", two_color_pattern<RingPattern>},
+    {"checkers", two_color_pattern<CheckersPattern>},
+    {"blended", blended},
+    {"map", map_pattern},
 };
 
 }  // namespace

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fixture of the scene loader's tests that load scene files: writes
 // text to a temporary folder and loads it with load_scene.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scene loader's top level: the document item by item (or whole), each
 // item a define, the camera, a light or a shape. The parts live beside it:
 // scene_reader.h (values and positions), yaml_params.h (an item's keys),
@@ -92,10 +93,13 @@ Scene load_whole(LoadState& state, const YAML::Node& root) {
   if (!root.IsSequence())
     state.reader.fail(root, "a scene must be a list of items ('- add: ...' or '- define: ...'), got " + describe(root));
   auto it = root.begin();
-  return build(state, [&]() -> std::optional<YAML::Node> {
-    if (it == root.end()) return std::nullopt;
-    return *it++;
-  }, root.Mark());
+  return build(
+      state,
+      [&]() -> std::optional<YAML::Node> {
+        if (it == root.end()) return std::nullopt;
+        return *it++;
+      },
+      root.Mark());
 }
 
 // Item by item (yaml_items.h); nullopt when an item does not load alone:
@@ -104,14 +108,17 @@ std::optional<Scene> load_items(LoadState& state, const YamlItems& items) {
   struct NeedsWholeDocument {};
   std::size_t next = 0;
   try {
-    return build(state, [&]() -> std::optional<YAML::Node> {
-      if (next == items.items.size()) return std::nullopt;
-      const YamlItemText& text = items.items[next++];
-      std::optional<YAML::Node> item = load_item(text);
-      if (!item) throw NeedsWholeDocument{};
-      state.reader.start_item(*item, text.first_line);
-      return item;
-    }, items.list);
+    return build(
+        state,
+        [&]() -> std::optional<YAML::Node> {
+          if (next == items.items.size()) return std::nullopt;
+          const YamlItemText& text = items.items[next++];
+          std::optional<YAML::Node> item = load_item(text);
+          if (!item) throw NeedsWholeDocument{};
+          state.reader.start_item(*item, text.first_line);
+          return item;
+        },
+        items.list);
   } catch (const NeedsWholeDocument&) {
     return std::nullopt;
   } catch (const YAML::Exception&) {
@@ -122,11 +129,15 @@ std::optional<Scene> load_items(LoadState& state, const YamlItems& items) {
 std::string format_yaml_error(const std::string& source, const YAML::Exception& e) {
   std::ostringstream os;
   os << source << ':';
-  if (e.mark.line >= 0) os << e.mark.line + 1 << ':' << e.mark.column + 1 << ": ";
-  else os << ' ';
+  if (e.mark.line >= 0)
+    os << e.mark.line + 1 << ':' << e.mark.column + 1 << ": ";
+  else
+    os << ' ';
   // yaml-cpp's depth guard says "bad file"; say what it means.
-  if (dynamic_cast<const YAML::DeepRecursion*>(&e)) os << "YAML syntax error: lists or maps nested too deeply";
-  else os << "YAML syntax error: " << e.msg;
+  if (dynamic_cast<const YAML::DeepRecursion*>(&e))
+    os << "YAML syntax error: lists or maps nested too deeply";
+  else
+    os << "YAML syntax error: " << e.msg;
   return os.str();
 }
 

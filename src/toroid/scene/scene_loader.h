@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scenes in the YAML format of "The Ray Tracer Challenge" (camera, lights,
 // defines, shapes, groups, CSG, OBJ meshes) plus `add: torus`.
 #pragma once
@@ -38,8 +39,8 @@ Scene load_scene(const std::string& path, const SceneLoadOptions& options = {});
 
 // The same from text; `source` names the text in messages and `base_dir`
 // resolves relative file names (OBJ meshes).
-Scene load_scene_from_string(const std::string& text, const std::string& source,
-                             const std::filesystem::path& base_dir, const SceneLoadOptions& options = {});
+Scene load_scene_from_string(const std::string& text, const std::string& source, const std::filesystem::path& base_dir,
+                             const SceneLoadOptions& options = {});
 
 // Levenshtein distance (for "did you mean" suggestions).
 int edit_distance(const std::string& a, const std::string& b);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loading a scene one top-level item at a time (the default) against loading
 // its whole YAML document: positions in messages are the file's, and the
 // documents that are loaded whole (flow lists, aliases) still load.
@@ -43,56 +44,58 @@ const std::string kCamera =
 
 TEST(SceneLoaderItems, AnErrorInTheThirdItemHasItsFileLineAndColumn) {
   expect_error_both_ways(kCamera +
-                             "\n"                             // 12
-                             "- add: sphere\n"                // 13
-                             "  material:\n"                  // 14
-                             "    specular: 0.5\n"            // 15
-                             "    color: [1, 0, red]\n",      // 16
+                             "\n"                         // 12
+                             "- add: sphere\n"            // 13
+                             "  material:\n"              // 14
+                             "    specular: 0.5\n"        // 15
+                             "    color: [1, 0, red]\n",  // 16
                          "s.yml:16:19: expected a number, got 'red'");
   // Indented list, an item's key at another column.
-  expect_error_both_ways("  -   add: light\n"
-                         "      at: [0, 0, 0]\n"
-                         "      intensity: [1, 1, 1]\n"
-                         "  -   add: sphere\n"
-                         "  -     add: cube\n"
-                         "        shadw: false\n",
-                         "s.yml:6:9: unknown key 'shadw' in a cube (did you mean 'shadow'?)");
+  expect_error_both_ways(
+      "  -   add: light\n"
+      "      at: [0, 0, 0]\n"
+      "      intensity: [1, 1, 1]\n"
+      "  -   add: sphere\n"
+      "  -     add: cube\n"
+      "        shadw: false\n",
+      "s.yml:6:9: unknown key 'shadw' in a cube (did you mean 'shadow'?)");
 }
 
 TEST(SceneLoaderItems, AnErrorInADefineHasTheDefinesPositionWhereALaterItemUsesIt) {
   const std::string defines = kCamera +
-                              "- define: base\n"            // 12
-                              "  value:\n"                  // 13
-                              "    ambient: 0.2\n"          // 14
-                              "    colr: [1, 0, 0]\n"       // 15
-                              "- define: shiny\n"           // 16
-                              "  extend: base\n"            // 17
-                              "  value:\n"                  // 18
-                              "    specular: 1\n"           // 19
-                              "- define: turn\n"            // 20
-                              "  value:\n"                  // 21
-                              "    - [rotate-y, 1, 2]\n";   // 22
+                              "- define: base\n"           // 12
+                              "  value:\n"                 // 13
+                              "    ambient: 0.2\n"         // 14
+                              "    colr: [1, 0, 0]\n"      // 15
+                              "- define: shiny\n"          // 16
+                              "  extend: base\n"           // 17
+                              "  value:\n"                 // 18
+                              "    specular: 1\n"          // 19
+                              "- define: turn\n"           // 20
+                              "  value:\n"                 // 21
+                              "    - [rotate-y, 1, 2]\n";  // 22
   expect_error_both_ways(defines +
-                             "- add: sphere\n"              // 23
-                             "  material: shiny\n",         // 24
+                             "- add: sphere\n"       // 23
+                             "  material: shiny\n",  // 24
                          "s.yml:15:5: unknown key 'colr' in a material (did you mean 'color'?)");
   expect_error_both_ways(defines +
-                             "- add: sphere\n"              // 23
-                             "  transform: [turn]\n",       // 24
+                             "- add: sphere\n"         // 23
+                             "  transform: [turn]\n",  // 24
                          "s.yml:22:7: 'rotate-y' takes 1 number, got 2");
   // The using item's own node, after the defines' items.
   expect_error_both_ways(defines +
-                             "- add: sphere\n"              // 23
-                             "  material: shiney\n",        // 24
+                             "- add: sphere\n"        // 23
+                             "  material: shiney\n",  // 24
                          "s.yml:24:13: undefined material 'shiney' (did you mean 'shiny'?)");
 }
 
 TEST(SceneLoaderItems, AnErrorAboutTheWholeListHasTheListsPosition) {
-  expect_error_both_ways("# no camera\n"
-                         "  - add: light\n"
-                         "    at: [0, 0, 0]\n"
-                         "    intensity: [1, 1, 1]\n",
-                         "s.yml:2:3: the scene has no camera (add one with '- add: camera')");
+  expect_error_both_ways(
+      "# no camera\n"
+      "  - add: light\n"
+      "    at: [0, 0, 0]\n"
+      "    intensity: [1, 1, 1]\n",
+      "s.yml:2:3: the scene has no camera (add one with '- add: camera')");
 }
 
 TEST(SceneLoaderItems, AFlowListLoads) {
@@ -123,9 +126,9 @@ TEST(SceneLoaderItems, AnAliasToAnAnchorInAnotherItemLoads) {
 TEST(SceneLoaderItems, ASyntaxErrorAfterABadItemIsReportedFirstAsBefore) {
   // The whole text is parsed before any item is built.
   expect_error_both_ways(kCamera +
-                             "- add: spher\n"          // 12
-                             "- add: cube\n"           // 13
-                             "  transform: [[\n",      // 14
+                             "- add: spher\n"      // 12
+                             "- add: cube\n"       // 13
+                             "  transform: [[\n",  // 14
                          "s.yml:15:1: YAML syntax error: end of sequence flow not found");
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scene loader's texture mapping: `pattern: {type: map, ...}` as the
 // RTC scenes write it, the torus mapping, image files and their errors.
 #include <gtest/gtest.h>
@@ -117,8 +118,9 @@ TEST_F(MapPatterns, AnImageNamedTwiceIsReadOnce) {
       "- add: sphere\n"
       "  material:\n"
       "    pattern: {type: map, mapping: spherical, uv_pattern: {type: image, file: shared.ppm}}\n";
-  const Scene s = load(sphere + sphere + "- add: sphere\n  material:\n    pattern: {type: map, mapping: spherical, "
-                                         "uv_pattern: {type: image, file: ./shared.ppm}}\n");
+  const Scene s = load(sphere + sphere +
+                       "- add: sphere\n  material:\n    pattern: {type: map, mapping: spherical, "
+                       "uv_pattern: {type: image, file: ./shared.ppm}}\n");
   auto canvas_of = [&](std::size_t i) {
     const auto& map = dynamic_cast<const TextureMapPattern&>(*s.world.objects.at(i)->material().pattern);
     return &dynamic_cast<const UvImage&>(map.uv_pattern()).canvas();
@@ -137,20 +139,21 @@ const std::string kTorusCheckers =
     "      uv_pattern: {type: checkers, width: 8, height: 4, colors: [[0, 0, 0], [1, 1, 1]]}\n";
 
 TEST_F(MapPatterns, TheTorusMappingTakesTheRadiiOfItsTorus) {
-  const Scene s = load("- define: iced\n"
-                       "  value:\n" +
-                       kTorusCheckers +
-                       "- add: torus\n"
-                       "  major: 2\n"
-                       "  minor: 0.5\n"
-                       "  material: iced\n"
-                       "- add: torus\n"
-                       "  material: iced\n"
-                       "- add: sphere\n"
-                       "  material:\n" +
-                       kTorusCheckers +
-                       "      major: 3\n"
-                       "      minor: 1\n");
+  const Scene s = load(
+      "- define: iced\n"
+      "  value:\n" +
+      kTorusCheckers +
+      "- add: torus\n"
+      "  major: 2\n"
+      "  minor: 0.5\n"
+      "  material: iced\n"
+      "- add: torus\n"
+      "  material: iced\n"
+      "- add: sphere\n"
+      "  material:\n" +
+      kTorusCheckers +
+      "      major: 3\n"
+      "      minor: 1\n");
   // R = 2: the top of the tube is over x = 2.
   EXPECT_APPROX(colour(s, 0, point(2.01, 0, 0.5)), black);
   EXPECT_APPROX(colour(s, 0, point(1.99, 0, 0.5)), white);
@@ -178,29 +181,33 @@ TEST_F(MapPatterns, Errors) {
   expect_error("- add: sphere\n  material:\n    pattern: {type: map, mapping: planar, uv_pattern: {type: checker}}\n",
                "10:62: unknown uv pattern type 'checker' (did you mean 'checkers'?) (use checkers, align_check or "
                "image)");
-  expect_error("- add: sphere\n  material:\n    pattern: {type: map, mapping: planar, uv_pattern: {type: checkers, "
-               "width: 0, height: 2, colors: [[0, 0, 0], [1, 1, 1]]}}\n",
-               "10:79: 'width' must be > 0, got 0");
-  expect_error("- add: plane\n  material:\n    pattern: {type: map, mapping: planar, uv_pattern: {type: align_check, "
-               "colors: {main: [1, 1, 1], ul: [1, 0, 0], ur: [1, 1, 0], bl: [0, 1, 0]}}}\n",
-               "10:83: align_check 'colors' needs 'br'");
+  expect_error(
+      "- add: sphere\n  material:\n    pattern: {type: map, mapping: planar, uv_pattern: {type: checkers, "
+      "width: 0, height: 2, colors: [[0, 0, 0], [1, 1, 1]]}}\n",
+      "10:79: 'width' must be > 0, got 0");
+  expect_error(
+      "- add: plane\n  material:\n    pattern: {type: map, mapping: planar, uv_pattern: {type: align_check, "
+      "colors: {main: [1, 1, 1], ul: [1, 0, 0], ur: [1, 1, 0], bl: [0, 1, 0]}}}\n",
+      "10:83: align_check 'colors' needs 'br'");
   expect_error("- add: cube\n  material:\n    pattern: {type: map, mapping: cube, left: {type: image, file: a.ppm}}\n",
                "10:14: a cube map pattern needs 'right'");
-  expect_error("- add: cube\n  material:\n    pattern:\n      type: map\n      mapping: cube\n"
-               "      left: {type: image, file: nope.ppm}\n      right: {type: image, file: nope.ppm}\n"
-               "      front: {type: image, file: nope.ppm}\n      back: {type: image, file: nope.ppm}\n"
-               "      up: {type: image, file: nope.ppm}\n      down: {type: image, file: nope.ppm}\n",
-               "13:33: image file 'nope.ppm' not found (looked for '" + dir_.file("nope.ppm") + "')");
+  expect_error(
+      "- add: cube\n  material:\n    pattern:\n      type: map\n      mapping: cube\n"
+      "      left: {type: image, file: nope.ppm}\n      right: {type: image, file: nope.ppm}\n"
+      "      front: {type: image, file: nope.ppm}\n      back: {type: image, file: nope.ppm}\n"
+      "      up: {type: image, file: nope.ppm}\n      down: {type: image, file: nope.ppm}\n",
+      "13:33: image file 'nope.ppm' not found (looked for '" + dir_.file("nope.ppm") + "')");
 }
 
 // Errors in an image come out at the scene's `file:` entry, followed by the
 // image's own FILE:LINE: problem.
 TEST_F(MapPatterns, ImageErrorsNameTheSceneEntryAndTheImageProblem) {
   write("bad.ppm", "P3\n2 1\n255\n0 0 0\n0 0 x\n");
-  expect_error("- add: sphere\n  material:\n    pattern:\n      type: map\n      mapping: spherical\n"
-               "      uv_pattern: {type: image, file: bad.ppm}\n",
-               "13:39: cannot load image 'bad.ppm': " + dir_.file("bad.ppm") +
-                   ":5: expected a whole number for the blue of pixel (1, 0), got 'x'");
+  expect_error(
+      "- add: sphere\n  material:\n    pattern:\n      type: map\n      mapping: spherical\n"
+      "      uv_pattern: {type: image, file: bad.ppm}\n",
+      "13:39: cannot load image 'bad.ppm': " + dir_.file("bad.ppm") +
+          ":5: expected a whole number for the blue of pixel (1, 0), got 'x'");
   write("bad.png", std::string("\x89PNG\r\n\x1a\n", 8) + "not really");
   const std::string path = write("scene.yml", kCamera +
                                                   "- add: sphere\n  material:\n    pattern:\n      type: map\n"

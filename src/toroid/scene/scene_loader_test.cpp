@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/scene/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -86,7 +87,6 @@ TEST(SceneLoader, TextureScenesWithoutTheirImagesNameTheMissingFile) {
   }
 }
 
-
 TEST_F(SceneFiles, LoadsATorusWithDefinesAndCsg) {
   const std::string p = write("t.yml", kCamera +
                                            "- define: glaze\n"
@@ -137,17 +137,16 @@ TEST_F(SceneFiles, LoadsATorusWithDefinesAndCsg) {
 }
 
 TEST_F(SceneFiles, LoadsAPartialTorusAndASpindleChoice) {
-  const Scene s = load_scene(write("p.yml", kCamera +
-                                                "- add: torus\n"
-                                                "  theta-max: 3.14159\n"
-                                                "  phi-min: -1.5\n"
-                                                "  phi-max: 2\n"
-                                                "- add: torus\n"
-                                                "  minor: 2\n"
-                                                "  spindle: outer\n"
-                                                "  theta-max: 6.2832\n"
-                                                "- add: torus\n"
-                                                "  spindle: whole\n"));
+  const Scene s = load_scene(write("p.yml", kCamera + "- add: torus\n"
+                                                      "  theta-max: 3.14159\n"
+                                                      "  phi-min: -1.5\n"
+                                                      "  phi-max: 2\n"
+                                                      "- add: torus\n"
+                                                      "  minor: 2\n"
+                                                      "  spindle: outer\n"
+                                                      "  theta-max: 6.2832\n"
+                                                      "- add: torus\n"
+                                                      "  spindle: whole\n"));
   ASSERT_EQ(s.world.objects.size(), 3u);
   const auto* a = dynamic_cast<const Torus*>(s.world.objects[0].get());
   ASSERT_NE(a, nullptr);
@@ -167,15 +166,14 @@ TEST_F(SceneFiles, LoadsAPartialTorusAndASpindleChoice) {
 }
 
 TEST_F(SceneFiles, LoadsAnAreaLight) {
-  const Scene s = load_scene(write("a.yml", kCamera +
-                                                "- add: light\n"
-                                                "  corner: [-1, 2, 4]\n"
-                                                "  uvec: [2, 0, 0]\n"
-                                                "  vvec: [0, 2, 0]\n"
-                                                "  usteps: 4\n"
-                                                "  vsteps: 2\n"
-                                                "  jitter: true\n"
-                                                "  intensity: [1.5, 1.5, 1.5]\n"));
+  const Scene s = load_scene(write("a.yml", kCamera + "- add: light\n"
+                                                      "  corner: [-1, 2, 4]\n"
+                                                      "  uvec: [2, 0, 0]\n"
+                                                      "  vvec: [0, 2, 0]\n"
+                                                      "  usteps: 4\n"
+                                                      "  vsteps: 2\n"
+                                                      "  jitter: true\n"
+                                                      "  intensity: [1.5, 1.5, 1.5]\n"));
   ASSERT_EQ(s.world.lights.size(), 1u);  // kCamera's point light
   ASSERT_EQ(s.world.area_lights.size(), 1u);
   const AreaLight& l = s.world.area_lights[0];
@@ -192,22 +190,21 @@ TEST_F(SceneFiles, LoadsAnAreaLight) {
 // Memory: shapes of equal material share one block (a shape holds a
 // pointer to it).
 TEST_F(SceneFiles, ShapesOfEqualMaterialShareIt) {
-  const Scene s = load_scene(write("m.yml", kCamera +
-                                                "- define: white-material\n"
-                                                "  value:\n"
-                                                "    color: [1, 1, 1]\n"
-                                                "    specular: 0.2\n"
-                                                "- add: torus\n"
-                                                "  material: white-material\n"
-                                                "- add: sphere\n"
-                                                "  material: white-material\n"
-                                                "- add: cube\n"
-                                                "  material: {color: [1, 1, 1], specular: 0.2}\n"
-                                                "- add: plane\n"
-                                                "  material: {color: [1, 1, 1], specular: 0.3}\n"
-                                                "- add: group\n"
-                                                "  material: white-material\n"
-                                                "  children: [{add: cone}]\n"));
+  const Scene s = load_scene(write("m.yml", kCamera + "- define: white-material\n"
+                                                      "  value:\n"
+                                                      "    color: [1, 1, 1]\n"
+                                                      "    specular: 0.2\n"
+                                                      "- add: torus\n"
+                                                      "  material: white-material\n"
+                                                      "- add: sphere\n"
+                                                      "  material: white-material\n"
+                                                      "- add: cube\n"
+                                                      "  material: {color: [1, 1, 1], specular: 0.2}\n"
+                                                      "- add: plane\n"
+                                                      "  material: {color: [1, 1, 1], specular: 0.3}\n"
+                                                      "- add: group\n"
+                                                      "  material: white-material\n"
+                                                      "  children: [{add: cone}]\n"));
   ASSERT_EQ(s.world.objects.size(), 5u);
   Shape& torus = *s.world.objects[0];
   const Shape& sphere = *s.world.objects[1];
@@ -234,14 +231,13 @@ TEST_F(SceneFiles, ShapesOfEqualMaterialShareIt) {
 
 TEST_F(SceneFiles, MaterialsWithTheirOwnPatternsAreNotShared) {
   // Each use of a pattern makes its own; a torus mapping takes its torus's radii.
-  const Scene s = load_scene(write("p.yml", kCamera +
-                                                "- define: stripy\n"
-                                                "  value:\n"
-                                                "    pattern: {type: stripes, colors: [[1, 1, 1], [0, 0, 0]]}\n"
-                                                "- add: sphere\n"
-                                                "  material: stripy\n"
-                                                "- add: sphere\n"
-                                                "  material: stripy\n"));
+  const Scene s = load_scene(write("p.yml", kCamera + "- define: stripy\n"
+                                                      "  value:\n"
+                                                      "    pattern: {type: stripes, colors: [[1, 1, 1], [0, 0, 0]]}\n"
+                                                      "- add: sphere\n"
+                                                      "  material: stripy\n"
+                                                      "- add: sphere\n"
+                                                      "  material: stripy\n"));
   ASSERT_EQ(s.world.objects.size(), 2u);
   const Material& a = s.world.objects[0]->material();
   const Material& b = s.world.objects[1]->material();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `material:` maps and material defines, and the table of shared materials.
 #include <set>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/scene/scene_reader.h"
 
 #include <algorithm>
@@ -70,8 +71,10 @@ void SceneReader::start_item(const YAML::Node& item, int first_line) {
 void SceneReader::fail(const YAML::Mark& mark, const std::string& what) const {
   std::ostringstream os;
   os << source_ << ':';
-  if (mark.line >= 0) os << mark.line + 1 << ':' << mark.column + 1 << ": ";
-  else os << ' ';
+  if (mark.line >= 0)
+    os << mark.line + 1 << ':' << mark.column + 1 << ": ";
+  else
+    os << ' ';
   os << what;
   throw SceneError(os.str());
 }

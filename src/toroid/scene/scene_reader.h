@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading values out of a scene's yaml-cpp nodes, with every error reported
 // as "FILE:LINE:COLUMN: message" at the node it is about.
 #pragma once
@@ -65,7 +66,7 @@ class SceneReader {
 
   double number(const YAML::Node& n) const;
   double positive(const YAML::Node& n, const std::string& what) const;  // > 0
-  int integer(const YAML::Node& n) const;                                // within +-2^30
+  int integer(const YAML::Node& n) const;                               // within +-2^30
   bool boolean(const YAML::Node& n) const;
   std::string name(const YAML::Node& n, const std::string& what) const;  // a non-empty scalar
   std::vector<double> numbers(const YAML::Node& n, std::size_t count, const std::string& what) const;

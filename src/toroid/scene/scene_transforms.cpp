@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `transform:` lists: [[translate, x, y, z], [rotate-y, a], NAME, ...].
 #include <cmath>
 #include <functional>
@@ -35,8 +36,7 @@ const TransformOp* find_op(const std::string& name) {
   return nullptr;
 }
 
-void apply_transform_define(LoadState& state, const YAML::Node& name_node, Matrix4& m,
-                            std::set<std::string>& visiting);
+void apply_transform_define(LoadState& state, const YAML::Node& name_node, Matrix4& m, std::set<std::string>& visiting);
 
 // Composes a transform list onto `m` (first listed applies first).
 void apply_transform_list(LoadState& state, const YAML::Node& list, Matrix4& m, std::set<std::string>& visiting) {

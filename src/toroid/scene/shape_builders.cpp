@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One builder per shape kind (`add: sphere`, ...); see ShapeItem for the
 // order a builder follows.
 #include <algorithm>
@@ -67,7 +68,8 @@ TorusSweep torus_sweep(const SceneReader& r, const Param& theta_max, const Param
   if (!(sw.phi_min < sw.phi_max))
     r.fail(where, "torus 'phi-max' must be greater than 'phi-min' (" + std::to_string(sw.phi_max) +
                       " <= " + std::to_string(sw.phi_min) + ")");
-  if (sw.phi_max - sw.phi_min > kTwoPi + kSlack) r.fail(where, "torus 'phi-max' - 'phi-min' must be at most 2 pi radians");
+  if (sw.phi_max - sw.phi_min > kTwoPi + kSlack)
+    r.fail(where, "torus 'phi-max' - 'phi-min' must be at most 2 pi radians");
   sw.phi_max = std::min(sw.phi_max, sw.phi_min + kTwoPi);
   return sw;
 }
@@ -94,7 +96,8 @@ std::shared_ptr<Shape> torus(ShapeItem& item) {
   if (spindle) {
     const std::string v = spindle.name("spindle");
     if (v != "whole" && v != "outer")
-      r.fail(spindle.value(), "unknown spindle surface '" + v + "' (use whole or outer)" + suggestion(v, {"whole", "outer"}));
+      r.fail(spindle.value(),
+             "unknown spindle surface '" + v + "' (use whole or outer)" + suggestion(v, {"whole", "outer"}));
     t->set_spindle(v == "outer" ? SpindleSurface::Outer : SpindleSurface::Whole);
   }
   return t;
@@ -106,27 +109,33 @@ std::shared_ptr<Shape> group(ShapeItem& item) {
   auto g = std::make_shared<Group>();
   if (children) {
     if (!children.value().IsSequence())
-      item.state.reader.fail(children.value(), "'children' must be a list of shapes, got " + describe(children.value()));
+      item.state.reader.fail(children.value(),
+                             "'children' must be a list of shapes, got " + describe(children.value()));
     for (const YAML::Node& child : children.value()) g->add_child(item.child(child, false));
   }
   return g;
 }
 
 std::shared_ptr<Shape> csg(ShapeItem& item) {
-  const Param operation = item.params.get("operation"), left = item.params.get("left"), right = item.params.get("right");
+  const Param operation = item.params.get("operation"), left = item.params.get("left"),
+              right = item.params.get("right");
   item.begin();
   const SceneReader& r = item.state.reader;
   const std::string o = r.name(operation.need("a csg"), "operation");
   CsgOp op;
-  if (o == "union") op = CsgOp::Union;
-  else if (o == "intersection") op = CsgOp::Intersection;
-  else if (o == "difference") op = CsgOp::Difference;
+  if (o == "union")
+    op = CsgOp::Union;
+  else if (o == "intersection")
+    op = CsgOp::Intersection;
+  else if (o == "difference")
+    op = CsgOp::Difference;
   else
-    r.fail(operation.value(), "unknown csg operation '" + o + "'" + suggestion(o, {"union", "intersection", "difference"}) +
+    r.fail(operation.value(), "unknown csg operation '" + o + "'" +
+                                  suggestion(o, {"union", "intersection", "difference"}) +
                                   " (use union, intersection or difference)");
   if (!left || !right)
-    r.fail(item.kind_node, std::string("a csg needs both 'left' and 'right' operands (missing '") +
-                               (!left ? "left" : "right") + "')");
+    r.fail(item.kind_node,
+           std::string("a csg needs both 'left' and 'right' operands (missing '") + (!left ? "left" : "right") + "')");
   auto l = item.child(left.value(), true);
   auto rt = item.child(right.value(), true);
   return std::make_shared<Csg>(op, std::move(l), std::move(rt));
@@ -149,14 +158,8 @@ std::shared_ptr<Shape> obj(ShapeItem& item) {
 }
 
 constexpr NamedBuilder<ShapeBuild> kShapes[] = {
-    {"sphere", plain<Sphere>},
-    {"plane", plain<Plane>},
-    {"cube", plain<Cube>},
-    {"cylinder", truncated<Cylinder>},
-    {"cone", truncated<Cone>},
-    {"group", group},
-    {"csg", csg},
-    {"obj", obj},
+    {"sphere", plain<Sphere>}, {"plane", plain<Plane>}, {"cube", plain<Cube>}, {"cylinder", truncated<Cylinder>},
+    {"cone", truncated<Cone>}, {"group", group},        {"csg", csg},          {"obj", obj},
     {"torus", torus},
 };
 

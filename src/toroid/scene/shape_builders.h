@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shapes from scene items: read_shape() follows `add:` through shape
 // defines and hands the item to the builder of its kind, found by name in
 // shape_builders() (shape_builders.cpp).
@@ -28,10 +29,10 @@ struct ShapeItem {
   LoadState& state;
   ItemParams& params;
   const std::string& kind;
-  const YAML::Node& kind_node;  // the `add:` value ("needs" messages point here)
+  const YAML::Node& kind_node;      // the `add:` value ("needs" messages point here)
   std::set<std::string>& visiting;  // shape defines being followed (see collect_shape)
-  std::size_t depth;  // 1 for a scene item, one more inside each group or CSG
-  const Material* inherited;  // a group's or CSG's material, if any
+  std::size_t depth;                // 1 for a scene item, one more inside each group or CSG
+  const Material* inherited;        // a group's or CSG's material, if any
 
   // Filled by begin().
   Material material;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // read_shape(): what every shape item has in common; the kinds are in
 // shape_builders.cpp.
 #include <algorithm>
@@ -51,8 +52,10 @@ void collect_shape(LoadState& state, const YAML::Node& item, std::string& kind, 
   collect_shape(state, it->second.value, kind, kind_node, out, visiting, false);
   for (const Entry& e : own) {
     auto same = std::find_if(out.begin(), out.end(), [&](const Entry& o) { return o.key == e.key; });
-    if (same != out.end()) *same = e;
-    else out.push_back(e);
+    if (same != out.end())
+      *same = e;
+    else
+      out.push_back(e);
   }
 }
 

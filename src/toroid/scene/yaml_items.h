@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The top-level items of a YAML scene one at a time, so that loading a big
 // scene never holds yaml-cpp's node tree of the whole document:
 // split_items() parses the text once without building nodes and finds where

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/scene/yaml_items.h"
 
 #include <gtest/gtest.h>
@@ -45,18 +46,18 @@ TEST(SplitItems, TakesAnIndentedListAndAFlowValueSpanningLines) {
 
 TEST(SplitItems, LeavesEveryOtherDocumentToBeLoadedWhole) {
   const char* const whole[] = {
-      "",                                        // empty
-      "# only a comment\n",                      // empty
-      "[{add: camera}, {add: sphere}]\n",        // a flow list
-      "add: camera\n",                           // a map
-      "camera\n",                                // a scalar
-      "- &m {color: [1, 0, 0]}\n- *m\n",         // an alias
+      "",                                                                 // empty
+      "# only a comment\n",                                               // empty
+      "[{add: camera}, {add: sphere}]\n",                                 // a flow list
+      "add: camera\n",                                                    // a map
+      "camera\n",                                                         // a scalar
+      "- &m {color: [1, 0, 0]}\n- *m\n",                                  // an alias
       "- add: sphere\n  material: &m {}\n- {add: cube, material: *m}\n",  // an alias in an item
-      "-\n  add: camera\n",                      // the item's node is below its '-'
-      "- a\n-\n- c\n",                           // an empty item
-      "- a\n---\n- b\n",                         // a second document
-      "- a\n...\n",                              // the end of the document
-      "\xEF\xBB\xBF- a\n- b\n",                  // a byte-order mark
+      "-\n  add: camera\n",                                               // the item's node is below its '-'
+      "- a\n-\n- c\n",                                                    // an empty item
+      "- a\n---\n- b\n",                                                  // a second document
+      "- a\n...\n",                                                       // the end of the document
+      "\xEF\xBB\xBF- a\n- b\n",                                           // a byte-order mark
   };
   for (const char* text : whole) {
     SCOPED_TRACE(text);
@@ -102,10 +103,10 @@ TEST(LoadItem, GivesTheItemsNodeWithMarksCountedFromItsFirstLine) {
 }
 
 TEST(LoadItem, RefusesTextThatIsNotThatOneItem) {
-  EXPECT_FALSE(load_item({"- a\n- b\n", 0, 2}));     // two items
-  EXPECT_FALSE(load_item({"a: b\n", 0, 0}));         // no list
-  EXPECT_FALSE(load_item({"- a\n", 0, 4}));          // not at the expected column
-  EXPECT_FALSE(load_item({"- [a\n", 0, 2}));         // a syntax error
+  EXPECT_FALSE(load_item({"- a\n- b\n", 0, 2}));  // two items
+  EXPECT_FALSE(load_item({"a: b\n", 0, 0}));      // no list
+  EXPECT_FALSE(load_item({"- a\n", 0, 4}));       // not at the expected column
+  EXPECT_FALSE(load_item({"- [a\n", 0, 2}));      // a syntax error
   EXPECT_TRUE(load_item({"- a\n", 0, 2}));
 }
 

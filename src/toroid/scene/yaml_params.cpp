@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/scene/yaml_params.h"
 
 #include <algorithm>

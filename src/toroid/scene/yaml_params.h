@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The keys of one scene item (a shape, a light, a pattern, ...) as a builder
 // reads them, after pbrt's ParameterDictionary: get() marks a key as read,
 // and report_unused() fails at the first key nobody asked for. The keys a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/scene/yaml_params.h"
 
 #include <gtest/gtest.h>
@@ -38,7 +39,8 @@ TEST(ItemParams, TheKeysReadAreTheKeysAllowed) {
   EXPECT_EQ(message_of("{min: 1, max: 2}", asking_for({"min", "max"})), "");
   EXPECT_EQ(message_of("{min: 1, maxx: 2}", asking_for({"min", "max"})),
             "item.yml:1:10: unknown key 'maxx' in a thing (did you mean 'max'?)");
-  EXPECT_EQ(message_of("{min: 1, colour: 2}", asking_for({"min", "max"})), "item.yml:1:10: unknown key 'colour' in a thing");
+  EXPECT_EQ(message_of("{min: 1, colour: 2}", asking_for({"min", "max"})),
+            "item.yml:1:10: unknown key 'colour' in a thing");
 }
 
 TEST(ItemParams, OnATieTheKeyAskedForFirstIsSuggested) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/shapes/annular_cylinder.h"
 
 #include <algorithm>
@@ -18,8 +19,9 @@ bool AnnularCylinder::may_meet(const Tuple& origin, const Tuple& direction, doub
   // covered by `slack`.
   const double t_shift = -(origin.x * d.x + origin.y * d.y + origin.z * d.z) / dd;
   const double px = origin.x + t_shift * d.x, py = origin.y + t_shift * d.y, pz = origin.z + t_shift * d.z;
-  const double slack = kMargin * (r_out + half_height) +
-                       1e-15 * (std::abs(origin.x) + std::abs(origin.y) + std::abs(origin.z) + std::abs(t_shift) * std::sqrt(dd));
+  const double slack =
+      kMargin * (r_out + half_height) +
+      1e-15 * (std::abs(origin.x) + std::abs(origin.y) + std::abs(origin.z) + std::abs(t_shift) * std::sqrt(dd));
   double lo = t_min - t_shift, hi = t_max - t_shift;
 
   // The slab |z| <= half height.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A bounding volume for ring shapes: the solid annular cylinder (a thick
 // washer) r_in <= sqrt(x^2 + y^2) <= r_out, |z| <= half_height, axis z. A
 // torus fits in the one with r_in = R - r, r_out = R + r, half height r;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // End caps shared by the cylinder and the cone (RTC chapter 13).
 #pragma once
 

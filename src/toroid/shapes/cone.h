@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Double-napped cone x^2 + z^2 = y^2 around the y axis (RTC chapter 13),
 // optionally truncated to minimum < y < maximum and closed with caps.
 #pragma once

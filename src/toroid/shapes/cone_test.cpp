@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cones.feature
 #include "toroid/shapes/cone.h"
 

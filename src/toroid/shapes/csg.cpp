@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/shapes/csg.h"
 
 #include <algorithm>
@@ -10,12 +11,9 @@ namespace toroid {
 
 bool intersection_allowed(CsgOp op, bool lhit, bool inl, bool inr) {
   switch (op) {
-    case CsgOp::Union:
-      return (lhit && !inr) || (!lhit && !inl);
-    case CsgOp::Intersection:
-      return (lhit && inr) || (!lhit && inl);
-    case CsgOp::Difference:
-      return (lhit && !inr) || (!lhit && inl);
+    case CsgOp::Union: return (lhit && !inr) || (!lhit && !inl);
+    case CsgOp::Intersection: return (lhit && inr) || (!lhit && inl);
+    case CsgOp::Difference: return (lhit && !inr) || (!lhit && inl);
   }
   return false;
 }

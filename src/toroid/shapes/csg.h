@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Constructive solid geometry (RTC chapter 16): the union, intersection or
 // difference of two shapes.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // csg.feature, plus smoke tests of CSG over operands whose intersections
 // arrive unsorted (groups) and of the bonus chapter's CSG bounds.
 #include "toroid/shapes/csg.h"
@@ -46,15 +47,14 @@ TEST(Csg, EvaluatingTheRuleForACsgOperation) {
   constexpr auto I = CsgOp::Intersection;
   constexpr auto D = CsgOp::Difference;
   const Example examples[] = {
-      {U, true, true, true, false},   {U, true, true, false, true},   {U, true, false, true, false},
-      {U, true, false, false, true},  {U, false, true, true, false},  {U, false, true, false, false},
-      {U, false, false, true, true},  {U, false, false, false, true},
-      {I, true, true, true, true},    {I, true, true, false, false},  {I, true, false, true, true},
-      {I, true, false, false, false}, {I, false, true, true, true},   {I, false, true, false, true},
-      {I, false, false, true, false}, {I, false, false, false, false},
-      {D, true, true, true, false},   {D, true, true, false, true},   {D, true, false, true, false},
-      {D, true, false, false, true},  {D, false, true, true, true},   {D, false, true, false, true},
-      {D, false, false, true, false}, {D, false, false, false, false},
+      {U, true, true, true, false},    {U, true, true, false, true},   {U, true, false, true, false},
+      {U, true, false, false, true},   {U, false, true, true, false},  {U, false, true, false, false},
+      {U, false, false, true, true},   {U, false, false, false, true}, {I, true, true, true, true},
+      {I, true, true, false, false},   {I, true, false, true, true},   {I, true, false, false, false},
+      {I, false, true, true, true},    {I, false, true, false, true},  {I, false, false, true, false},
+      {I, false, false, false, false}, {D, true, true, true, false},   {D, true, true, false, true},
+      {D, true, false, true, false},   {D, true, false, false, true},  {D, false, true, true, true},
+      {D, false, true, false, true},   {D, false, false, true, false}, {D, false, false, false, false},
   };
   for (const Example& e : examples)
     EXPECT_EQ(intersection_allowed(e.op, e.lhit, e.inl, e.inr), e.result)
@@ -202,8 +202,8 @@ TEST(Csg, SmokeCsgLeavesEarlierIntersectionsAlone) {
   Group world;
   auto before = sphere_with(translation(0, 0, 20));
   world.add_child(before);
-  world.add_child(std::make_shared<Csg>(CsgOp::Difference, std::make_shared<Sphere>(),
-                                        sphere_with(translation(0, 0, 0.5))));
+  world.add_child(
+      std::make_shared<Csg>(CsgOp::Difference, std::make_shared<Sphere>(), sphere_with(translation(0, 0, 0.5))));
   Intersections xs;
   world.intersect({point(0, 0, -5), vector(0, 0, 1)}, xs);
   ASSERT_EQ(xs.size(), 4u);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Axis-aligned cube from -1 to 1 on every axis (RTC chapter 12).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cubes.feature
 #include "toroid/shapes/cube.h"
 
@@ -33,9 +34,12 @@ TEST(Cubes, ARayIntersectsACube) {
 
 TEST(Cubes, ARayMissesACube) {
   const Ray rays[] = {
-      {point(-2, 0, 0), vector(0.2673, 0.5345, 0.8018)}, {point(0, -2, 0), vector(0.8018, 0.2673, 0.5345)},
-      {point(0, 0, -2), vector(0.5345, 0.8018, 0.2673)}, {point(2, 0, 2), vector(0, 0, -1)},
-      {point(0, 2, 2), vector(0, -1, 0)},                {point(2, 2, 0), vector(-1, 0, 0)},
+      {point(-2, 0, 0), vector(0.2673, 0.5345, 0.8018)},
+      {point(0, -2, 0), vector(0.8018, 0.2673, 0.5345)},
+      {point(0, 0, -2), vector(0.5345, 0.8018, 0.2673)},
+      {point(2, 0, 2), vector(0, 0, -1)},
+      {point(0, 2, 2), vector(0, -1, 0)},
+      {point(2, 2, 0), vector(-1, 0, 0)},
   };
   const Cube c;
   for (const Ray& r : rays) {

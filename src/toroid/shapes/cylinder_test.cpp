@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cylinders.feature
 #include "toroid/shapes/cylinder.h"
 
@@ -95,7 +96,7 @@ TEST(Cylinders, TheDefaultClosedValueForACylinder) {
 TEST(Cylinders, IntersectingTheCapsOfAClosedCylinder) {
   const CountExample examples[] = {
       {point(0, 3, 0), vector(0, -1, 0), 2},  {point(0, 3, -2), vector(0, -1, 2), 2},
-      {point(0, 4, -2), vector(0, -1, 1), 2},  // corner case
+      {point(0, 4, -2), vector(0, -1, 1), 2},                                          // corner case
       {point(0, 0, -2), vector(0, 1, 2), 2},  {point(0, -1, -2), vector(0, 1, 1), 2},  // corner case
   };
   Cylinder cyl;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A group of shapes sharing one transform (RTC chapter 14), with a cached
 // bounding box and the bonus chapter's bounding volume hierarchy (divide).
 #pragma once

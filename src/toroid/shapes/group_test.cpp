@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // groups.feature; the group scenarios of shapes.feature (suite Shapes); the
 // bonus chapter's group scenarios from bounding_boxes.CraigTreptow-rayz.feature
 // and groups_with_bvh.ShadeShiner-...feature, each distinct scenario once.
@@ -207,7 +208,8 @@ TEST(Groups, DividingCoincidentChildrenTerminates) {
   ShapeList same;
   // Degenerate triangles: every box is the same single point, so no split
   // can separate them (the book's divide would recurse forever).
-  for (int i = 0; i < 10; ++i) same.push_back(std::make_shared<Triangle>(point(1, 1, 1), point(1, 1, 1), point(1, 1, 1)));
+  for (int i = 0; i < 10; ++i)
+    same.push_back(std::make_shared<Triangle>(point(1, 1, 1), point(1, 1, 1), point(1, 1, 1)));
   auto g = group_of(same);
   g->divide(2);
   EXPECT_EQ(g->size(), 10u);
@@ -251,8 +253,7 @@ TEST(Groups, DividingKeepsEveryIntersection) {
 // split, and dividing them used to recurse until the stack overflowed.
 TEST(Groups, DividingChildrenThatAllStraddleTheSplitEnds) {
   Group g;
-  for (int i = 0; i < 6; ++i)
-    g.add_child(std::make_shared<Triangle>(point(-1, 0, 0), point(1, 0, 0), point(0, 1, 0)));
+  for (int i = 0; i < 6; ++i) g.add_child(std::make_shared<Triangle>(point(-1, 0, 0), point(1, 0, 0), point(0, 1, 0)));
   g.divide(4);
   EXPECT_EQ(g.size(), 6u);  // nothing separates them: they stay together
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // intersections.feature: intersections and the hit (the scenarios about
 // prepare_computations and schlick are in computations_test.cpp).
 #include "toroid/core/intersection.h"

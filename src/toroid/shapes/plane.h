@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The xz plane, y = 0 in object space (RTC chapter 9).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // planes.feature
 #include "toroid/shapes/plane.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A shape with a surface of its own and at most four intersections along
 // any ray (sphere, plane, cube, cylinder, cone, triangle, torus). Derived
 // lists them once, into a fixed array, with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The shape base (RTC chapter 9): a transform, a material and an optional
 // parent group. Subclasses intersect and shade in their own object space.
 #pragma once
@@ -6,13 +7,13 @@
 #include <memory>
 #include <utility>
 
-#include "toroid/math/affine.h"
-#include "toroid/math/matrix.h"
+#include "toroid/core/bounds.h"
 #include "toroid/core/intersection.h"
 #include "toroid/core/material.h"
-#include "toroid/core/shared_material.h"
 #include "toroid/core/ray.h"
-#include "toroid/core/bounds.h"
+#include "toroid/core/shared_material.h"
+#include "toroid/math/affine.h"
+#include "toroid/math/matrix.h"
 
 namespace toroid {
 
@@ -67,9 +68,7 @@ class Shape {
   }
   // Whether a shape that casts shadows meets the ray at some 0 <= t < t_max
   // (shadow rays: any blocker will do).
-  bool blocks(const Ray& ray, double t_max) const {
-    return casts_shadow && local_blocks(to_object_space(ray), t_max);
-  }
+  bool blocks(const Ray& ray, double t_max) const { return casts_shadow && local_blocks(to_object_space(ray), t_max); }
 
   // Normal at a world-space point; `hit` carries u/v for smooth triangles.
   // Virtual so that a shape whose normal is the same everywhere (a plane)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bonus chapter "Bounding boxes and hierarchies", community transcriptions:
 // bounding_boxes.CraigTreptow-rayz.feature, bounds.ShadeShiner-...feature and
 // bounds.bedis-elacheche.feature, each distinct scenario once. The group

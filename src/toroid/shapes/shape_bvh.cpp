@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/shapes/shape_bvh.h"
 
 #include <atomic>
@@ -240,7 +241,7 @@ std::size_t ShapeBvh::split(std::vector<Item>& items, std::size_t begin, std::si
   // Median on the widest axis.
   const int axis = hi[0] - lo[0] >= hi[1] - lo[1] && hi[0] - lo[0] >= hi[2] - lo[2] ? 0
                    : hi[1] - lo[1] >= hi[2] - lo[2]                                 ? 1
-                                                                                     : 2;
+                                                                                    : 2;
   const std::size_t mid = begin + (end - begin) / 2;
   std::nth_element(items.begin() + static_cast<std::ptrdiff_t>(begin), items.begin() + static_cast<std::ptrdiff_t>(mid),
                    items.begin() + static_cast<std::ptrdiff_t>(end),
@@ -462,7 +463,8 @@ const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections&
 }
 
 std::size_t ShapeBvh::bytes() const {
-  return nodes_.capacity() * sizeof(Node) + planes_.capacity() * sizeof(PlanePair) + unbounded_.capacity() * sizeof(const Shape*);
+  return nodes_.capacity() * sizeof(Node) + planes_.capacity() * sizeof(PlanePair) +
+         unbounded_.capacity() * sizeof(const Shape*);
 }
 
 }  // namespace toroid

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A flat bounding volume hierarchy over a list of shapes that share one
 // space (the world's top level), for the renderer's two queries: the nearest
 // hit and "is anything in the way" (shadow rays). The book's Group::divide
@@ -14,9 +15,9 @@
 #include <span>
 #include <vector>
 
+#include "toroid/core/bounds.h"
 #include "toroid/core/intersection.h"
 #include "toroid/core/ray.h"
-#include "toroid/core/bounds.h"
 
 namespace toroid {
 

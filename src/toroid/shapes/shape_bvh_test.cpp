@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "toroid/shapes/shape_bvh.h"
 
 #include <gtest/gtest.h>
@@ -66,8 +67,9 @@ TEST(ShapeBvh, AxisParallelRaysAlongBoxFacesFindWhatEveryShapeGives) {
   int hits = 0;
   for (double along : {-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0})
     for (double across : {-1.0, 0.0, 1.0, 2.0, 3.0}) {
-      for (const Ray& ray : {Ray{point(-5, along, across), vector(1, 0, 0)}, Ray{point(along, 20, across), vector(0, -1, 0)},
-                             Ray{point(along, across, -5), vector(0, 0, 1)}, Ray{point(along, across, 5), vector(0, 0, -1)}}) {
+      for (const Ray& ray :
+           {Ray{point(-5, along, across), vector(1, 0, 0)}, Ray{point(along, 20, across), vector(0, -1, 0)},
+            Ray{point(along, across, -5), vector(0, 0, 1)}, Ray{point(along, across, 5), vector(0, 0, -1)}}) {
         Intersection expected, got;
         const bool found = nearest_of_every_shape(shapes, ray, expected);
         ASSERT_EQ(bvh.intersect_nearest(ray, kInf, got), found) << ray.origin << " " << ray.direction;
@@ -86,7 +88,8 @@ TEST(ShapeBvh, BlocksWhenSomeShadowCasterLiesBeforeTMax) {
   int blocked = 0;
   for (const Ray& ray : random_rays(3000))
     for (double t_max : {2.0, 8.0, kInf}) {
-      const bool expected = std::any_of(shapes.begin(), shapes.end(), [&](const auto& s) { return s->blocks(ray, t_max); });
+      const bool expected =
+          std::any_of(shapes.begin(), shapes.end(), [&](const auto& s) { return s->blocks(ray, t_max); });
       ASSERT_EQ(bvh.blocks(ray, t_max), expected);
       blocked += expected;
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // shapes.feature (the scenarios that need no group; those that do are ported
 // with groups).
 #include "toroid/shapes/shape.h"

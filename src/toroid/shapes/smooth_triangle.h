@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Triangle with a normal at each vertex, interpolated across the face with
 // the hit's barycentric u/v (RTC chapter 15).
 #pragma once
@@ -8,8 +9,7 @@ namespace toroid {
 
 class SmoothTriangle : public Triangle {
  public:
-  SmoothTriangle(const Tuple& p1, const Tuple& p2, const Tuple& p3, const Tuple& n1, const Tuple& n2,
-                 const Tuple& n3)
+  SmoothTriangle(const Tuple& p1, const Tuple& p2, const Tuple& p3, const Tuple& n1, const Tuple& n2, const Tuple& n3)
       : Triangle(p1, p2, p3), n1_(n1), n2_(n2), n3_(n3) {}
 
   const Tuple& n1() const { return n1_; }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // smooth-triangles.feature
 #include "toroid/shapes/smooth_triangle.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Unit sphere at the origin (RTC chapter 5).
 #pragma once
 

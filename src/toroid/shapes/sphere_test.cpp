@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // spheres.feature
 #include "toroid/shapes/sphere.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The torus shape: ring in the object's xy-plane, axis z, centred at the
 // origin; `major` (R) to the tube's centre, `minor` (r) the tube's radius.
 // All math lives in torus_intersect.h; this class adapts it to Shape and adds
@@ -9,9 +10,9 @@
 #include <memory>
 #include <numbers>
 
-#include "toroid/torus/solver.h"
 #include "toroid/shapes/annular_cylinder.h"
 #include "toroid/shapes/primitive.h"
+#include "toroid/torus/solver.h"
 
 namespace toroid {
 

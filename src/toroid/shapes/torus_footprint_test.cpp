@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Memory: one torus instance costs at most 256 bytes. The object
 // and the shared-pointer control block it is allocated with, as the scene
 // loader allocates it (make_shared), come to 176 bytes; its material is a
@@ -33,7 +34,9 @@ struct CountingAllocator {
   }
   void deallocate(T* p, std::size_t n) { std::allocator<T>().deallocate(p, n); }
   template <typename U>
-  bool operator==(const CountingAllocator<U>&) const { return true; }
+  bool operator==(const CountingAllocator<U>&) const {
+    return true;
+  }
 };
 
 // The shape base: vtable pointer, affine inverse (96), material pointer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Torus shape in the RTC scenario style: intersections, normals,
 // transforms, bounds, groups, CSG, partial and spindle tori.
 #include "toroid/shapes/torus.h"
@@ -55,10 +56,10 @@ TEST(Torus, ARayThatOnlyTouchesTheOuterEquator) {
 
 TEST(Torus, NormalsAtKnownPoints) {
   const Torus t(1, 0.25);
-  EXPECT_APPROX(t.normal_at(point(1.25, 0, 0)), vector(1, 0, 0));   // outer equator
-  EXPECT_APPROX(t.normal_at(point(0.75, 0, 0)), vector(-1, 0, 0));  // inner equator
-  EXPECT_APPROX(t.normal_at(point(0, 1, 0.25)), vector(0, 0, 1));   // top
-  EXPECT_APPROX(t.normal_at(point(0, -1, -0.25)), vector(0, 0, -1)); // bottom
+  EXPECT_APPROX(t.normal_at(point(1.25, 0, 0)), vector(1, 0, 0));     // outer equator
+  EXPECT_APPROX(t.normal_at(point(0.75, 0, 0)), vector(-1, 0, 0));    // inner equator
+  EXPECT_APPROX(t.normal_at(point(0, 1, 0.25)), vector(0, 0, 1));     // top
+  EXPECT_APPROX(t.normal_at(point(0, -1, -0.25)), vector(0, 0, -1));  // bottom
   const double s = std::sqrt(0.5);
   EXPECT_APPROX(t.normal_at(point(s * 1.25, s * 1.25, 0)), vector(s, s, 0));
 }
@@ -267,8 +268,7 @@ TEST(Torus, BoundsShrinkToTheSweptPart) {
       // The outer half of the tube over an eighth of the turn.
       {M_PI / 4, -M_PI / 2, M_PI / 2, point(c, 0, -0.25), point(1.25, 1.25 * c, 0.25)},
       // A thin band around the top: z >= 0.25 sin(pi/3), radius 1 +- 0.125.
-      {2 * M_PI, M_PI / 3, 2 * M_PI / 3, point(-1.125, -1.125, 0.25 * std::sin(M_PI / 3)),
-       point(1.125, 1.125, 0.25)},
+      {2 * M_PI, M_PI / 3, 2 * M_PI / 3, point(-1.125, -1.125, 0.25 * std::sin(M_PI / 3)), point(1.125, 1.125, 0.25)},
   };
   for (const Case& k : cases) {
     SCOPED_TRACE(::testing::Message() << k.theta_max << " " << k.phi_min << " " << k.phi_max);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Flat triangle (RTC chapter 15), intersected with Moller-Trumbore.
 #pragma once
 

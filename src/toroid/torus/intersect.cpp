@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ray–torus intersection. See docs/torus.md for the derivation and the
 // accuracy figures; the short version of the default solver:
 //
@@ -96,7 +97,6 @@ class TorusFactor {
   }
 
   double minor() const { return r_; }
-
 
  private:
   double o_hi_[3], o_lo_[3];
@@ -233,8 +233,10 @@ class RootCollector {
       // A close pair: the same iteration with the value in double-double,
       // on the whole bracket (the double iteration's signs may be rounding).
       x = solve_monotone(
-          [&](double s) { return std::pair<double, double>{f_.eval_precise(s), f_.sample(s).dh}; }, a.s, b.s,
-          lo_negative, x, tol);
+          [&](double s) {
+            return std::pair<double, double>{f_.eval_precise(s), f_.sample(s).dh};
+          },
+          a.s, b.s, lo_negative, x, tol);
     }
     return x;
   }
@@ -257,8 +259,8 @@ enum class Search { All, First, Any };
 // Roots of one factor inside the ball |p| <= radius, in the shifted frame,
 // ascending, restricted to [s_min, s_max]. Pieces wholly outside that window
 // are skipped; see Search.
-int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3], double radius,
-                 double s_min, double s_max, Search search, double* out) {
+int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3], double radius, double s_min,
+                 double s_max, Search search, double* out) {
   // Ball: dd s^2 + 2 b s + (|o|^2 - radius^2) = 0. The origin is the ray's
   // point nearest the centre, so b is ~0 and the chord is well conditioned.
   const double b = o[0].hi * d[0] + o[1].hi * d[1] + o[2].hi * d[2];
@@ -380,7 +382,7 @@ int solve_default(double R, double r, const double origin[3], const double d[3],
                   Search search, double t[4]) {
   const auto exponent_outside = [](double x, int range) {
     return x > 0 && std::isfinite(x) && !(x > std::ldexp(1.0, -range) && x < std::ldexp(1.0, range)) ? std::ilogb(x)
-                                                                                                      : 0;
+                                                                                                     : 0;
   };
   const int k = exponent_outside(R + r, 100);
   const int j = exponent_outside(std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])}), 200);
@@ -426,7 +428,8 @@ void torus_quartic_coefficients(double R, double r, const double o[3], const dou
 int intersect_torus(double major, double minor, const double origin[3], const double direction[3], double t[4],
                     TorusSolver solver) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  if (solver == TorusSolver::Default) return solve_default(major, minor, origin, direction, -kInf, kInf, Search::All, t);
+  if (solver == TorusSolver::Default)
+    return solve_default(major, minor, origin, direction, -kInf, kInf, Search::All, t);
   double k[5];
   torus_quartic_coefficients(major, minor, origin, direction, k);
   double found[4];

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ray–torus intersection: the one place where the torus is solved. The Torus
 // shape, the `toroid intersect` command, the benchmarks and the accuracy
 // harness all call these functions, and so can another renderer
@@ -16,15 +17,14 @@ namespace toroid {
 // Every real root t of |o + t d| on the torus (negative ones too), ascending,
 // with multiplicity where the quartic has a multiple root. `direction` need
 // not be of unit length. Returns the count (0..4) written to t.
-int intersect_torus(double major, double minor, const double origin[3], const double direction[3],
-                    double t[4], TorusSolver solver = TorusSolver::Default);
+int intersect_torus(double major, double minor, const double origin[3], const double direction[3], double t[4],
+                    TorusSolver solver = TorusSolver::Default);
 
 // The nearest root in the open interval (t_min, t_max), as a renderer needs
 // it; same accuracy as intersect_torus, with an early exit. Returns false and
 // leaves *t unchanged when there is none.
 bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
-                             double t_min, double t_max, double* t,
-                             TorusSolver solver = TorusSolver::Default);
+                             double t_min, double t_max, double* t, TorusSolver solver = TorusSolver::Default);
 
 // Whether some root lies in the open interval (t_min, t_max): the answer of
 // intersect_torus_nearest, for shadow rays, which need no root's position

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // intersect_torus at known roots, including the seed's special geometries.
 #include "toroid/torus/intersect.h"
 #include "toroid/torus/surface.h"

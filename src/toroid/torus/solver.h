@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How the torus's roots are found, chosen by name (CLI --solver, YAML
 // `solver:`, API). The default is toroid's own robust solver; the closed
 // forms are there to compare against (docs/torus.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The torus's surface at a point: normal, which sheet of a spindle torus,
 // and the surface parameters. Same torus as intersect.h: ring in the
 // xy-plane, axis z, centred at the origin,
