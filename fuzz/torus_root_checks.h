@@ -12,6 +12,8 @@
 // surface by at most c eps (R + r); rounding t to a double moves the point by
 // half an ulp of t times |d|, which the same term covers. Hence
 //     dist(o + t d, torus) <= C eps (|o| + |t| |d| + R + r),
+// plus, for inputs below the normal range, where doubles are spaced by
+// denorm_min rather than relatively, C denorm_min (1 + |d|).
 // whatever the conditioning of t (for a grazing ray the point slides along
 // the surface, nearly tangentially). The default solver works on the
 // factors (rho -+ R)^2 + z^2 - r^2 evaluated from the point, with the origin
@@ -56,7 +58,10 @@ inline long double torus_residual_bound(double major, double minor, const double
   const long double dn =
       std::hypot(static_cast<long double>(d[0]), static_cast<long double>(d[1]), static_cast<long double>(d[2]));
   const long double scale = on + std::abs(static_cast<long double>(t)) * dn + major + minor;
-  return kResidualUlps * std::numeric_limits<double>::epsilon() * scale;
+  // Below the normal range doubles are spaced by denorm_min, not by eps
+  // relative: the inputs and t are only known to that much.
+  const long double spacing = std::numeric_limits<double>::denorm_min() * (1 + dn);
+  return kResidualUlps * (std::numeric_limits<double>::epsilon() * scale + spacing);
 }
 
 [[noreturn]] inline void fail_roots(const char* what, double major, double minor, const double o[3], const double d[3],
