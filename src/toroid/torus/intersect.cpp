@@ -301,7 +301,10 @@ int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3
       // rho_min^2 = K / c: iff (R K / |d|^2)^2 > (K / c)^3. Only then is the
       // cube root needed.
       const double rho_i3 = f.major() * f.K() / f.dd(), rho_min2 = f.K() / f.c();
-      if (rho_i3 * rho_i3 > rho_min2 * rho_min2 * rho_min2) {
+      // For a ray that passes within ~1e-50 torus sizes of the axis the
+      // square and the cube underflow: then the roots themselves decide.
+      const double square = rho_i3 * rho_i3;
+      if (square > rho_min2 * rho_min2 * rho_min2 || (square < 0x1p-1000 && std::cbrt(rho_i3) > std::sqrt(rho_min2))) {
         const double rho_i = std::cbrt(rho_i3);
         const double hw = std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c());
         concave_lo = s_axis - hw;
@@ -335,7 +338,7 @@ int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3
   return collector.count();
 }
 
-// The default solver on the shifted frame. Writes roots as t values.
+// The ray with its origin moved, exactly, to its point nearest the centre.
 struct ShiftedRay {
   DoubleDouble o[3];
   double t_shift;
@@ -351,8 +354,19 @@ ShiftedRay shift_to_nearest_centre_point(const double origin[3], const double d[
   return r;
 }
 
-int solve_unit_scale(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
-                     Search search, double t[4]) {
+int solve_rescaled(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
+                   Search search, double t[4]);
+
+// The default solver; writes roots as t values. A torus far from unit size would
+// underflow or overflow the factors' products (R^2, r^2, |p|^2), and a
+// direction far from unit length |d|^2 and the derivatives: then the
+// geometry (radii and origin) and the direction are each scaled by a power
+// of two, which is exact, and so is scaling t back (solve_rescaled).
+int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
+                  Search search, double t[4]) {
+  const double size = R + r, dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  if (!(size > 0x1p-100 && size < 0x1p100 && dd > 0x1p-400 && dd < 0x1p400))
+    return solve_rescaled(R, r, origin, d, t_min, t_max, search, t);
   const ShiftedRay ray = shift_to_nearest_centre_point(origin, d);
   const double s_min = t_min - ray.t_shift, s_max = t_max - ray.t_shift;
   double s_out[4], s_in[4];
@@ -373,20 +387,17 @@ int solve_unit_scale(double R, double r, const double origin[3], const double d[
   return n;
 }
 
-// The default solver. A torus far from unit size would underflow or
-// overflow the factors' products (R^2, r^2, |p|^2), and a direction far from
-// unit length |d|^2 and the derivatives: the geometry (radii and origin) and
-// the direction are each scaled by a power of two, which is exact, and so is
-// scaling t back. Tori and directions of ordinary size are used as they are.
-int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
-                  Search search, double t[4]) {
-  const auto exponent_outside = [](double x, int range) {
-    return x > 0 && std::isfinite(x) && !(x > std::ldexp(1.0, -range) && x < std::ldexp(1.0, range)) ? std::ilogb(x)
-                                                                                                     : 0;
+// solve_default on a torus or a direction far from unit size: scaled by
+// powers of two into the range, solved, and t scaled back.
+int solve_rescaled(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
+                   Search search, double t[4]) {
+  // The power of two to scale by: 0 within the range, or for 0, inf and NaN.
+  const auto exponent_outside = [](double x, double lo, double hi) {
+    return x > 0 && std::isfinite(x) && !(x > lo && x < hi) ? std::ilogb(x) : 0;
   };
-  const int k = exponent_outside(R + r, 100);
-  const int j = exponent_outside(std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])}), 200);
-  if (k == 0 && j == 0) return solve_unit_scale(R, r, origin, d, t_min, t_max, search, t);
+  const int k = exponent_outside(R + r, 0x1p-100, 0x1p100);
+  const int j = exponent_outside(std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])}), 0x1p-200, 0x1p200);
+  if (k == 0 && j == 0) return 0;  // a radius or the direction is 0, infinite or NaN: no ray, no torus
   // p = o + t d becomes 2^-k p = o' + t' d' with o' = 2^-k o, d' = 2^-j d,
   // t' = 2^(j-k) t.
   const double o_s[3] = {std::scalbn(origin[0], -k), std::scalbn(origin[1], -k), std::scalbn(origin[2], -k)};
@@ -394,8 +405,8 @@ int solve_default(double R, double r, const double origin[3], const double d[3],
   // An origin more than the largest double of torus sizes away sees nothing.
   if (!std::isfinite(o_s[0]) || !std::isfinite(o_s[1]) || !std::isfinite(o_s[2])) return 0;
   double found[4];
-  const int m = solve_unit_scale(std::scalbn(R, -k), std::scalbn(r, -k), o_s, d_s, std::scalbn(t_min, j - k),
-                                 std::scalbn(t_max, j - k), search, found);
+  const int m = solve_default(std::scalbn(R, -k), std::scalbn(r, -k), o_s, d_s, std::scalbn(t_min, j - k),
+                              std::scalbn(t_max, j - k), search, found);
   // A root beyond the largest double (a tiny direction) is not representable: left out.
   int n = 0;
   for (int i = 0; i < m; ++i)
