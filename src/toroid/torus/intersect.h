@@ -8,11 +8,20 @@
 // origin: (sqrt(x^2 + y^2) - major)^2 + z^2 = minor^2. Any major > 0 and
 // minor > 0 is allowed: minor >= major gives horn and spindle tori, whose
 // whole quartic surface (the spindle's inner "lemon" included) is intersected.
+// Tori and rays of any size are solved alike (they are scaled, exactly, by
+// powers of two). Each root puts o + t d within a few ulps of
+// |o| + |t d| + major + minor of the surface, for radii within 2^200 of
+// each other (kTorusAspectLimit): beyond that a torus is a sphere or a
+// circle to double precision, and the parts at the smaller radius's scale
+// underflow.
 #pragma once
 
 #include "toroid/torus/solver.h"
 
 namespace toroid {
+
+// The largest ratio of the radii (either way) for which the roots' accuracy holds.
+inline constexpr double kTorusAspectLimit = 0x1p200;
 
 // Every real root t of |o + t d| on the torus (negative ones too), ascending,
 // with multiplicity where the quartic has a multiple root. `direction` need
