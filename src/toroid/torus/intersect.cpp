@@ -354,8 +354,8 @@ ShiftedRay shift_to_nearest_centre_point(const double origin[3], const double d[
   return r;
 }
 
-int solve_rescaled(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
-                   Search search, double t[4]);
+[[gnu::noinline, gnu::cold]] int solve_rescaled(double R, double r, const double origin[3], const double d[3],
+                                                double t_min, double t_max, Search search, double t[4]);
 
 // The default solver; writes roots as t values. A torus far from unit size would
 // underflow or overflow the factors' products (R^2, r^2, |p|^2), and a
@@ -389,8 +389,8 @@ int solve_default(double R, double r, const double origin[3], const double d[3],
 
 // solve_default on a torus or a direction far from unit size: scaled by
 // powers of two into the range, solved, and t scaled back.
-int solve_rescaled(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
-                   Search search, double t[4]) {
+[[gnu::noinline, gnu::cold]] int solve_rescaled(double R, double r, const double origin[3], const double d[3],
+                                                double t_min, double t_max, Search search, double t[4]) {
   // The power of two to scale by: 0 within the range, or for 0, inf and NaN.
   const auto exponent_outside = [](double x, double lo, double hi) {
     return x > 0 && std::isfinite(x) && !(x > lo && x < hi) ? std::ilogb(x) : 0;
