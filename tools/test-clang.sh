@@ -16,7 +16,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh clang libclang-rt-14-dev libfuzzer-14-dev
 build=build-ci-clang
-CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOROID_FUZZ=ON \
+CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOROID_FUZZ=ON \
   -DTOROID_SIMD=OFF -DTOROID_WERROR=ON >/dev/null
 cmake --build "$build" -j "$(nproc)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1

@@ -10,10 +10,12 @@
 // whole quartic surface (the spindle's inner "lemon" included) is intersected.
 // Tori and rays of any size are solved alike (they are scaled, exactly, by
 // powers of two). Each root puts o + t d within a few ulps of
-// |o| + |t d| + major + minor of the surface, for radii within 2^200 of
-// each other (kTorusAspectLimit): beyond that a torus is a sphere or a
-// circle to double precision, and the parts at the smaller radius's scale
-// underflow.
+// |o| + |t d| + major + minor of the surface for radii within 2^30 of each
+// other (kTorusAspectLimit). Thinner tubes are solved too, but a pair of
+// roots across a tube thinner than about 1e-10 major can be taken for a
+// near-tangent pair and returned as the point between them (the rounding of
+// h is then above the near-tangent threshold); far fatter spindles are
+// spheres to double precision.
 #pragma once
 
 #include "toroid/torus/solver.h"
@@ -21,7 +23,7 @@
 namespace toroid {
 
 // The largest ratio of the radii (either way) for which the roots' accuracy holds.
-inline constexpr double kTorusAspectLimit = 0x1p200;
+inline constexpr double kTorusAspectLimit = 0x1p30;
 
 // Every real root t of |o + t d| on the torus (negative ones too), ascending,
 // with multiplicity where the quartic has a multiple root. `direction` need
