@@ -73,8 +73,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
        {toroid::TorusSolver::Default, toroid::TorusSolver::Ferrari, toroid::TorusSolver::Tianheng}) {
     double t[4];
     const int count = toroid::intersect_torus(R, r, o, d, t, s);
-    const bool in_domain = R / r < toroid::kTorusAspectLimit && r / R < toroid::kTorusAspectLimit &&
-                           axis_distance(o, d) >= toroid::kTorusAxisClearance * (R + r);
+    const bool near_horn_axis = std::abs(r - R) < toroid::kTorusAxisClearance * (R + r) &&
+                                axis_distance(o, d) < toroid::kTorusAxisClearance * (R + r);
+    const bool in_domain = R / r < toroid::kTorusAspectLimit && r / R < toroid::kTorusAspectLimit && !near_horn_axis;
     if (s == toroid::TorusSolver::Default && in_domain) {
       toroid::fuzz::check_torus_roots(R, r, o, d, t, count);
     } else {

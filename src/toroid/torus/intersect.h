@@ -15,9 +15,9 @@
 // roots across a tube thinner than about 1e-10 major can be taken for a
 // near-tangent pair and returned as the point between them (the rounding of
 // h is then above the near-tangent threshold); far fatter spindles are
-// spheres to double precision. Nor does it hold for a ray that passes within
-// 2^-300 torus sizes of the axis (kTorusAxisClearance), whose nearness to
-// the axis underflows: of a horn or nearly horn torus, such a ray can
+// spheres to double precision. Nor does it hold, for a horn or nearly horn
+// torus (|minor - major| below 2^-20 of major + minor), for a ray that
+// passes that close to the axis (kTorusAxisClearance): such a ray can
 // return tube centres for the roots beside the axis.
 #pragma once
 
@@ -27,8 +27,9 @@ namespace toroid {
 
 // The largest ratio of the radii (either way) for which the roots' accuracy holds.
 inline constexpr double kTorusAspectLimit = 0x1p30;
-// The least distance of the ray from the axis, in units of major + minor, for which it holds.
-inline constexpr double kTorusAxisClearance = 0x1p-300;
+// For a nearly horn torus, the least distance of the ray from the axis, in
+// units of major + minor, for which it holds (see above).
+inline constexpr double kTorusAxisClearance = 0x1p-20;
 
 // Every real root t of |o + t d| on the torus (negative ones too), ascending,
 // with multiplicity where the quartic has a multiple root. `direction` need
