@@ -10,12 +10,12 @@
 // whole quartic surface (the spindle's inner "lemon" included) is intersected.
 // Tori and rays of any size are solved alike (they are scaled, exactly, by
 // powers of two). Each root puts o + t d within a few ulps of
-// |o| + |t d| + major + minor of the surface for radii within 2^30 of each
-// other (kTorusAspectLimit). Thinner tubes are solved too, but a pair of
+// |o| + |t d| + major + minor of the surface for minor / major from 2^-30
+// (kTorusAspectLimit) to 2 (kTorusFattestSpindle). Thinner tubes are solved too, but a pair of
 // roots across a tube thinner than about 1e-10 major can be taken for a
 // near-tangent pair and returned as the point between them (the rounding of
-// h is then above the near-tangent threshold); far fatter spindles are
-// spheres to double precision. Nor does it hold, for a horn or nearly horn
+// h is then above the near-tangent threshold); fatter spindles are solved
+// too, but one of minor / major = 9e8 returned its centre for a root. Nor does it hold, for a horn or nearly horn
 // torus (|minor - major| below 2^-20 of major + minor), for a ray that
 // passes that close to the axis (kTorusAxisClearance): such a ray can
 // return tube centres for the roots beside the axis.
@@ -25,8 +25,10 @@
 
 namespace toroid {
 
-// The largest ratio of the radii (either way) for which the roots' accuracy holds.
+// The range of minor / major over which the roots' accuracy holds: from
+// 1 / kTorusAspectLimit to kTorusFattestSpindle (the spindles it is tested on).
 inline constexpr double kTorusAspectLimit = 0x1p30;
+inline constexpr double kTorusFattestSpindle = 2;
 // For a nearly horn torus, the least distance of the ray from the axis, in
 // units of major + minor, for which it holds (see above).
 inline constexpr double kTorusAxisClearance = 0x1p-20;
