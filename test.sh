@@ -3,7 +3,7 @@
 # Builds toroid and runs every test (ctest). Installs missing Debian packages first.
 set -euo pipefail
 cd "$(dirname "$0")"
-tools/install-deps.sh
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+tools/install-deps.sh --tests
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DTOROID_PYTHON=ON -DTOROID_EMBREE=ON >/dev/null
 cmake --build build
 ctest --test-dir build --output-on-failure -j "$(nproc)"

@@ -1,10 +1,21 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Installs the Debian 12 packages toroid needs, only those that are missing.
+#   tools/install-deps.sh [--tests] [PACKAGE...]
+# --tests adds what the whole test suite needs beyond the renderer's build:
+# the Python module's and the Embree adapter's packages, and clang (the
+# consumer test that links the GCC-built archive with clang).
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config ccache
   libgtest-dev libgmock-dev libbenchmark-dev libyaml-cpp-dev libpng-dev libcli11-dev
-  libtbb-dev libtinyobjloader-dev libmpfr-dev libgmp-dev "$@")
+  libtbb-dev libtinyobjloader-dev libmpfr-dev libgmp-dev)
+for arg in "$@"; do
+  if [ "$arg" = --tests ]; then
+    packages+=(python3-dev python3-numpy python3-pybind11 pybind11-dev libembree-dev clang)
+  else
+    packages+=("$arg")
+  fi
+done
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

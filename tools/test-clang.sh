@@ -14,7 +14,7 @@
 # fuzz runs. Crash inputs land in build-ci-clang/fuzz-artifacts/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tools/install-deps.sh clang libclang-rt-14-dev libfuzzer-14-dev
+tools/install-deps.sh --tests clang libclang-rt-14-dev libfuzzer-14-dev
 build=build-ci-clang
 CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOROID_FUZZ=ON \
   -DTOROID_SIMD=OFF -DTOROID_WERROR=ON >/dev/null

@@ -9,7 +9,7 @@
 # TOROID_SIMD=OFF, the fuzz targets too); this one is GCC's.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tools/install-deps.sh
+tools/install-deps.sh --tests
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOROID_SANITIZE=ON -DTOROID_SIMD=OFF -DTOROID_BUILD_BENCH=OFF >/dev/null
 cmake --build build-asan
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1

@@ -13,7 +13,7 @@
 # on the instrumented one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tools/install-deps.sh clang libclang-rt-14-dev dpkg-dev xz-utils  # dpkg-dev: apt-get source unpacks with dpkg-source
+tools/install-deps.sh --tests clang libclang-rt-14-dev dpkg-dev xz-utils  # dpkg-dev: apt-get source unpacks with dpkg-source
 export CXX=clang++ CC=clang
 prefix=$PWD/build-ci-tbb-tsan/prefix
 tools/build-tbb-tsan.sh "$prefix"

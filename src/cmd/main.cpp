@@ -4,10 +4,11 @@
 
 #include "cmd/intersect_command.h"
 #include "cmd/render_command.h"
+#include "toroid/version.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"toroid: a ray tracer with an exact, analytic torus"};
-  app.set_version_flag("--version", "toroid 0.1.0");
+  app.set_version_flag("--version", "toroid " TOROID_VERSION_STRING);
   app.require_subcommand(1);
   int exit_code = 0;
   toroid::cmd::add_intersect_command(app, exit_code);
