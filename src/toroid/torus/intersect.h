@@ -34,8 +34,12 @@ inline constexpr double kTorusFattestSpindle = 2;
 inline constexpr double kTorusAxisClearance = 0x1p-20;
 
 // Every real root t of |o + t d| on the torus (negative ones too), ascending,
-// with multiplicity where the quartic has a multiple root. `direction` need
-// not be of unit length. Returns the count (0..4) written to t.
+// with multiplicity where the quartic has a multiple root: a tangent point is
+// listed twice. The one exception is a fourfold root, where the ray lies in
+// the plane of the tube's top or bottom circle and touches that circle (the
+// quartic is then (t - t0)^4): that point is listed twice, not four times.
+// `direction` need not be of unit length. Returns the count (0..4) written
+// to t.
 int intersect_torus(double major, double minor, const double origin[3], const double direction[3], double t[4],
                     TorusSolver solver = TorusSolver::Default);
 
