@@ -1,12 +1,14 @@
 # SPDX-License-Identifier: Apache-2.0
-# cmake -DBUILD=... -DPREFIX=... -DCOMPONENT=... -DLIBDIR=... -P install.cmake:
-# a fresh install of one component of a build folder, for the consumer tests.
+# cmake -DBUILD=... -DPREFIX=... "-DCOMPONENTS=torus;embree" -DLIBDIR=... -P install.cmake:
+# a fresh install of some components of a build folder, for the consumer tests.
 file(REMOVE_RECURSE "${PREFIX}")
-execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD}" --prefix "${PREFIX}" --component "${COMPONENT}"
-  RESULT_VARIABLE status)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "cmake --install ${BUILD} --component ${COMPONENT} failed: ${status}")
-endif()
+foreach(component ${COMPONENTS})
+  execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD}" --prefix "${PREFIX}" --component "${component}"
+    RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "cmake --install ${BUILD} --component ${component} failed: ${status}")
+  endif()
+endforeach()
 foreach(file include/toroid/torus_c.h include/toroid/torus/intersect.h include/toroid/version.h
     ${LIBDIR}/cmake/toroid/toroidConfig.cmake ${LIBDIR}/pkgconfig/toroid-torus.pc)
   if(NOT EXISTS "${PREFIX}/${file}")
