@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "cmd/cli.h"
 #include "toroid/io/ray_line.h"
 #include "toroid/torus/intersect.h"
 
@@ -50,10 +51,13 @@ int run_intersect(const IntersectOptions& opt) {
 
 void add_intersect_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<IntersectOptions>();
-  CLI::App* sub = app.add_subcommand(
-      "intersect",
-      "Intersect rays with a torus (ring in the xy-plane, axis z). Reads one ray per line from stdin,\n"
-      "'ox oy oz dx dy dz'; writes 'k t1 ... tk' per ray: the k real roots, ascending, round-trip exact.");
+  CLI::App* sub = app.add_subcommand("intersect", "Intersect rays with a torus: rays on stdin, roots on stdout");
+  add_version_flag(*sub);
+  sub->footer(
+      "The torus: its ring in the xy-plane, its axis z. Each line of stdin is a ray, 'ox oy oz dx dy dz';\n"
+      "each line of stdout 'k t1 ... tk', its k real roots, ascending, printed to read back exactly.\n"
+      "\nExample:\n  printf -- '-5 0 0 1 0 0\\n' | toroid intersect --major 1 --minor 0.25\n"
+      "\nDocs: README.md (\"toroid intersect\").");
   const CLI::Validator positive(
       [](std::string& s) {
         double v = 0;

@@ -2,23 +2,26 @@
 // The `toroid` command line: a thin layer over the library.
 #include <CLI/CLI.hpp>
 
+#include "cmd/cli.h"
 #include "cmd/intersect_command.h"
 #include "cmd/render_command.h"
-#include "toroid/version.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"toroid: a ray tracer with an exact, analytic torus"};
-  app.set_version_flag("--version", "toroid " TOROID_VERSION_STRING);
+  // Named here, so that help shows "toroid", not argv[0]'s path.
+  CLI::App app{"toroid: a ray tracer with an exact, analytic torus", "toroid"};
+  toroid::cmd::add_version_flag(app);
   app.require_subcommand(1);
+  app.failure_message(toroid::cmd::usage_error);
+  app.footer(std::string("Example:\n  ") + toroid::cmd::kRenderExample +
+             "\n\nRun 'toroid SUBCOMMAND --help' for its options.\n" + toroid::cmd::kDocsLine);
   int exit_code = 0;
-  toroid::cmd::add_intersect_command(app, exit_code);
   toroid::cmd::add_render_command(app, exit_code);
+  toroid::cmd::add_intersect_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help and --version exit 0; every usage error exits 2.
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    return toroid::cmd::exit_on_parse_error(app, e);
   }
   return exit_code;
 }

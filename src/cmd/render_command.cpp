@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 
+#include "cmd/cli.h"
 #include "toroid/io/image_writer.h"
 #include "toroid/render/image_limits.h"
 #include "toroid/render/renderer.h"
@@ -142,10 +143,12 @@ int run_render(const RenderCommandOptions& opt) {
 void add_render_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<RenderCommandOptions>();
   CLI::App* sub = app.add_subcommand(
-      "render",
-      "Render a scene in the Ray Tracer Challenge YAML format (plus 'add: torus') to a PNG or PPM image.\n"
-      "Prints WIDTHxHEIGHT, samples, threads, time, rays (camera + shadow + reflected + refracted) and\n"
-      "Mrays/s on stderr; a progress bar too when stderr is a terminal.");
+      "render", "Render a scene (Ray Tracer Challenge YAML, plus 'add: torus') to a PNG or PPM image");
+  add_version_flag(*sub);
+  sub->footer(std::string("When done it prints WIDTHxHEIGHT, samples, threads, time, rays and Mrays/s on stderr;\n"
+                          "while it renders, a progress bar when stderr is a terminal.\n"
+                          "\nExample:\n  ") +
+              kRenderExample + "\n\n" + kDocsLine + "\nEvery error message and exit status: docs/errors.md.");
   sub->add_option("scene", opt->scene, "Scene file (.yml/.yaml)")->required()->check(CLI::ExistingFile);
   sub->add_option("-o,--output", opt->output, "Output image: .png (8-bit sRGB) or .ppm (the book's plain PPM)")
       ->required();
