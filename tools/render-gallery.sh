@@ -3,7 +3,7 @@
 # Renders the pictures of docs/gallery.md into docs/images, one core each,
 # and prints one line per picture: the command, toroid's own final line
 # (size, samples, threads, wall time, rays) and the CPU time (user + sys).
-# Usage: tools/render-gallery.sh [chapters|rtc|stress|all]   (from the checkout root,
+# Usage: tools/render-gallery.sh [chapters|rtc|stress|tori|all]   (from the checkout root,
 # after building; the rtc pictures need ../shared/rtc-scenes or
 # TOROID_SHARED_DIR)
 set -euo pipefail
@@ -46,4 +46,9 @@ if [[ "$which" == stress || "$which" == all ]]; then
   for s in far-camera thin thin-tiny huge tiny offset-1e12 glass-tiny glass-thin-tiny; do
     render "stress-$s.png" "scenes/stress/$s.yaml"
   done
+fi
+
+if [[ "$which" == tori || "$which" == all ]]; then
+  # A capped partial torus: the README's half-eaten doughnut closed into a solid (its camera and size).
+  render bitten-doughnut.png scenes/bitten-doughnut.yaml --samples 16
 fi

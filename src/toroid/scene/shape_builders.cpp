@@ -2,7 +2,9 @@
 // One builder per shape kind (`add: sphere`, ...); see ShapeItem for the
 // order a builder follows.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <string>
 
 #include "toroid/scene/obj_file.h"
 #include "toroid/scene/shape_builders.h"
@@ -37,6 +39,13 @@ std::shared_ptr<Shape> truncated(ShapeItem& item) {
   if (closed) s->closed = closed.boolean();
   if (min && max && !(s->minimum < s->maximum)) item.state.reader.fail(max.value(), "'max' must be greater than 'min'");
   return s;
+}
+
+// The shortest text that reads back as v.
+std::string shortest(double v) {
+  char buf[32];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, res.ptr);
 }
 
 TorusRadii torus_radii(const Param& major, const Param& minor) {
@@ -78,7 +87,7 @@ std::shared_ptr<Shape> torus(ShapeItem& item) {
   ItemParams& p = item.params;
   const Param major = p.get("major"), minor = p.get("minor"), solver = p.get("solver");
   const Param theta_max = p.get("theta-max"), phi_min = p.get("phi-min"), phi_max = p.get("phi-max");
-  const Param spindle = p.get("spindle");
+  const Param spindle = p.get("spindle"), caps = p.get("caps");
   item.begin([&] { return torus_radii(major, minor); });
   const SceneReader& r = item.state.reader;
   const TorusRadii radii = torus_radii(major, minor);
@@ -99,6 +108,15 @@ std::shared_ptr<Shape> torus(ShapeItem& item) {
       r.fail(spindle.value(),
              "unknown spindle surface '" + v + "' (use whole or outer)" + suggestion(v, {"whole", "outer"}));
     t->set_spindle(v == "outer" ? SpindleSurface::Outer : SpindleSurface::Whole);
+  }
+  // `caps: true` closes a partial torus's cuts (Torus::set_caps); a whole
+  // torus is closed already. A partial spindle torus cannot be closed by
+  // discs: an error rather than an open shape.
+  if (caps && caps.boolean()) {
+    if (!t->sweep().whole() && radii.minor > radii.major)
+      r.fail(caps.value(), "torus 'caps' needs minor <= major on a partial torus (minor " + shortest(radii.minor) +
+                               " > major " + shortest(radii.major) + "): a spindle torus's cut faces cross its axis");
+    t->set_caps(true);
   }
   return t;
 }
