@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `add: camera`: the one camera of a scene.
 #include <numbers>
+#include <sstream>
 
 #include "toroid/render/image_limits.h"
 #include "toroid/scene/item_builders.h"
@@ -22,8 +23,17 @@ void build_camera(LoadState& state, SceneParts& parts, ItemParams& item) {
     r.fail(c.width < 1 || c.width > kMaxImageSide ? w : h, "camera " + e);
   const YAML::Node& f = fov.need("a camera");
   c.fov = r.number(f);
-  if (!(c.fov > 0 && c.fov < std::numbers::pi))
-    r.fail(f, "field-of-view must be between 0 and pi radians, got " + f.Scalar());
+  if (!(c.fov > 0 && c.fov < std::numbers::pi)) {
+    // A view between pi and 180 is almost surely in degrees: say what it
+    // would be in radians.
+    std::string hint;
+    if (c.fov > std::numbers::pi && c.fov < 180) {
+      std::ostringstream meant;  // six significant digits, as %g
+      meant << c.fov * (std::numbers::pi / 180);
+      hint = "; if it is in degrees, write " + meant.str();
+    }
+    r.fail(f, "field-of-view must be between 0 and pi radians, got " + f.Scalar() + hint);
+  }
   c.from = r.point3(from.need("a camera"), "from");
   c.to = r.point3(to.need("a camera"), "to");
   c.up = r.vector3(up.need("a camera"), "up");

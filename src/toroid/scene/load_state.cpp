@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "toroid/scene/load_state.h"
 
+#include <algorithm>
+
 namespace toroid {
 
 void count(const LoadState& state, std::size_t& counter, std::size_t limit, const YAML::Node& where,
@@ -13,6 +15,15 @@ void count(const LoadState& state, std::size_t& counter, std::size_t limit, cons
 void check_nesting(const LoadState& state, std::size_t depth, const YAML::Node& where, const std::string& what) {
   if (depth > static_cast<std::size_t>(kMaxNesting))
     state.reader.fail(where, what + " nested more than " + std::to_string(kMaxNesting) + " deep");
+}
+
+void warn(LoadState& state, const YAML::Node& where, const std::string& what) {
+  const YAML::Mark mark = state.reader.file_mark(where);
+  std::string w = state.source + ':';
+  if (mark.line >= 0) w += std::to_string(mark.line + 1) + ':' + std::to_string(mark.column + 1) + ':';
+  w += " warning: " + what;
+  if (std::none_of(state.warnings.begin(), state.warnings.end(), [&](const SceneWarning& x) { return x.text == w; }))
+    state.warnings.push_back({mark.line, mark.column, std::move(w)});
 }
 
 std::filesystem::path resolve(const LoadState& state, const std::string& file) {

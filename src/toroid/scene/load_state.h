@@ -13,6 +13,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "toroid/core/canvas.h"
 #include "toroid/core/material.h"
@@ -38,16 +39,24 @@ struct MaterialOrder {
   bool operator()(const auto& a, const auto& b) const { return key(value(a)) < key(value(b)); }
 };
 
+// "FILE:LINE:COLUMN: warning: ..." and where it points (0-based, as
+// YAML::Mark), for sorting.
+struct SceneWarning {
+  int line, column;
+  std::string text;
+};
+
 struct TorusRadii {
   double major, minor;
 };
 
 struct LoadState {
-  LoadState(std::string source, std::filesystem::path base, const SceneLoadOptions& opts)
-      : reader(std::move(source), defines), base_dir(std::move(base)), options(opts) {}
+  LoadState(std::string source_name, std::filesystem::path base, const SceneLoadOptions& opts)
+      : source(std::move(source_name)), reader(source, defines), base_dir(std::move(base)), options(opts) {}
   LoadState(const LoadState&) = delete;  // the reader refers to defines
   LoadState& operator=(const LoadState&) = delete;
 
+  std::string source;  // the file's name in messages
   Defines defines;
   SceneReader reader;
   std::filesystem::path base_dir;  // relative file names are relative to it
@@ -61,6 +70,9 @@ struct LoadState {
   // Equal materials share one block: a scene may give thousands of shapes
   // the same material (a define), and a shape holds only a pointer to it.
   std::set<SharedMaterial, MaterialOrder> materials;
+  // Each once (see warn); scene_loader.cpp hands them to
+  // SceneLoadOptions::on_warning in the order of the file.
+  std::vector<SceneWarning> warnings;
 };
 
 // Limits that keep a mistaken (or hostile) scene from exhausting the stack,
@@ -74,6 +86,11 @@ constexpr std::size_t kMaxPatterns = 100'000;
 void count(const LoadState& state, std::size_t& counter, std::size_t limit, const YAML::Node& where,
            const std::string& what);
 void check_nesting(const LoadState& state, std::size_t depth, const YAML::Node& where, const std::string& what);
+
+// Records a warning at `where` unless the same one (text and position) is
+// already recorded: a define's nodes are read again at each use, and the
+// warning belongs where the value is written.
+void warn(LoadState& state, const YAML::Node& where, const std::string& what);
 
 // A file named in the scene: relative names are relative to the scene's directory.
 std::filesystem::path resolve(const LoadState& state, const std::string& file);

@@ -10,11 +10,14 @@
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <sstream>
+#include <tuple>
 
 #include "toroid/math/transform.h"
 #include "toroid/scene/item_builders.h"
@@ -141,6 +144,19 @@ std::string format_yaml_error(const std::string& source, const YAML::Exception& 
   return os.str();
 }
 
+// Hands a finished load's warnings to options.on_warning, or prints them,
+// in the order of the file (a group's transform is read after its children).
+void report_warnings(LoadState& state) {
+  std::stable_sort(state.warnings.begin(), state.warnings.end(), [](const SceneWarning& a, const SceneWarning& b) {
+    return std::tie(a.line, a.column) < std::tie(b.line, b.column);
+  });
+  for (const SceneWarning& w : state.warnings)
+    if (state.options.on_warning)
+      state.options.on_warning(w.text);
+    else
+      std::cerr << w.text << '\n';
+}
+
 }  // namespace
 
 Scene load_scene_from_string(const std::string& text, const std::string& source, const std::filesystem::path& base_dir,
@@ -153,8 +169,20 @@ Scene load_scene_from_string(const std::string& text, const std::string& source,
       throw SceneError(format_yaml_error(source, e));
     }
     if (items) {
+      // When the items do not load alone, the whole document's load below
+      // finds the same warnings again: these are dropped.
       LoadState state(source, base_dir, options);
-      if (std::optional<Scene> scene = load_items(state, *items)) return std::move(*scene);
+      std::optional<Scene> scene;
+      try {
+        scene = load_items(state, *items);
+      } catch (const SceneError&) {
+        report_warnings(state);
+        throw;
+      }
+      if (scene) {
+        report_warnings(state);
+        return std::move(*scene);
+      }
     }
   }
   YAML::Node root;
@@ -163,10 +191,16 @@ Scene load_scene_from_string(const std::string& text, const std::string& source,
   } catch (const YAML::Exception& e) {
     throw SceneError(format_yaml_error(source, e));
   }
+  LoadState state(source, base_dir, options);
   try {
-    LoadState state(source, base_dir, options);
-    return load_whole(state, root);
+    Scene scene = load_whole(state, root);
+    report_warnings(state);
+    return scene;
+  } catch (const SceneError&) {
+    report_warnings(state);
+    throw;
   } catch (const YAML::Exception& e) {
+    report_warnings(state);
     throw SceneError(format_yaml_error(source, e));
   }
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -32,6 +33,12 @@ struct SceneLoadOptions {
   // one top-level item at a time: the same scene or error, more memory
   // (for tests that compare the two).
   bool whole_document = false;
+  // Receives each warning, "FILE:LINE:COLUMN: warning: what", in the order
+  // of the file, once the scene has loaded or failed to (before the
+  // SceneError is thrown). A warning is a value that is allowed but almost
+  // surely a mistake, such as a rotation in degrees. Unset: each is printed
+  // to std::cerr on a line of its own.
+  std::function<void(const std::string&)> on_warning;
 };
 
 // Reads and builds the scene. Throws SceneError.

@@ -2,7 +2,9 @@
 // `transform:` lists: [[translate, x, y, z], [rotate-y, a], NAME, ...].
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <set>
+#include <sstream>
 
 #include "toroid/math/transform.h"
 #include "toroid/scene/load_state.h"
@@ -11,23 +13,37 @@ namespace toroid {
 
 namespace {
 
-// Each operation by name with how many numbers it takes.
+// Each operation by name with how many numbers it takes, and whether they
+// are angles (radians).
 struct TransformOp {
   std::string name;
   std::size_t args;
   std::function<Matrix4(const std::vector<double>&)> make;
+  bool angles = false;
 };
 
 const std::vector<TransformOp>& transform_ops() {
   static const std::vector<TransformOp> ops{
       {"translate", 3, [](const auto& v) { return translation(v[0], v[1], v[2]); }},
       {"scale", 3, [](const auto& v) { return scaling(v[0], v[1], v[2]); }},
-      {"rotate-x", 1, [](const auto& v) { return rotation_x(v[0]); }},
-      {"rotate-y", 1, [](const auto& v) { return rotation_y(v[0]); }},
-      {"rotate-z", 1, [](const auto& v) { return rotation_z(v[0]); }},
+      {"rotate-x", 1, [](const auto& v) { return rotation_x(v[0]); }, true},
+      {"rotate-y", 1, [](const auto& v) { return rotation_y(v[0]); }, true},
+      {"rotate-z", 1, [](const auto& v) { return rotation_z(v[0]); }, true},
       {"shear", 6, [](const auto& v) { return shearing(v[0], v[1], v[2], v[3], v[4], v[5]); }},
   };
   return ops;
+}
+
+// An angle beyond a full turn is almost surely in degrees (the book's
+// scenes, and many a first scene, write [rotate-x, 90]): it is still a valid
+// rotation, so the scene loads, but not silently.
+void check_angle(LoadState& state, const std::string& kind, const YAML::Node& node, double radians) {
+  if (std::abs(radians) <= 2 * std::numbers::pi) return;
+  std::ostringstream meant;  // six significant digits, as %g
+  meant << radians * (std::numbers::pi / 180);
+  warn(state, node,
+       kind + " angle " + node.Scalar() + " is more than 2 pi radians (a full turn); if it is in degrees, write " +
+           meant.str() + " (angles are in radians)");
 }
 
 const TransformOp* find_op(const std::string& name) {
@@ -63,7 +79,10 @@ void apply_transform_list(LoadState& state, const YAML::Node& list, Matrix4& m, 
       r.fail(op, "'" + kind + "' takes " + std::to_string(n) + " number" + (n == 1 ? "" : "s") + ", got " +
                      std::to_string(op.size() - 1));
     std::vector<double> v;
-    for (std::size_t i = 1; i <= n; ++i) v.push_back(r.number(op[i]));
+    for (std::size_t i = 1; i <= n; ++i) {
+      v.push_back(r.number(op[i]));
+      if (t->angles) check_angle(state, kind, op[i], v.back());
+    }
     m = t->make(v) * m;
   }
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Constructive solid geometry (RTC chapter 16): the union, intersection or
-// difference of two shapes.
+// difference of two shapes, each of which may be a group of overlapping
+// closed shapes (their union).
 #pragma once
 
 #include <cstddef>
@@ -42,8 +43,17 @@ class Csg : public Shape {
   void divide(std::size_t threshold) override;
 
   // Keeps, in place and in order, the intersections xs[first...] allowed by
-  // the operation and drops the rest. Precondition: xs[first...] is sorted by
-  // t and every object in it lies within left() or right().
+  // the operation and drops the rest. The ray is inside an operand where it
+  // is inside any of the operand's closed pieces (its primitives, and the
+  // outermost CSG shapes within it, each crossed an even number of times),
+  // so that a group of overlapping shapes acts as their union: a crossing
+  // inside the operand (one sphere's surface within another) is dropped.
+  // The pieces crossed an odd number of times (open surfaces: a mesh's
+  // triangles) share one inside flag per operand, flipped at each of their
+  // crossings as in the book. Where an operand's pieces do not overlap this
+  // is the book's rule. No allocation for up to 32 intersections.
+  // Precondition: xs[first...] is sorted by t and every object in it lies
+  // within left() or right().
   void filter_intersections(Intersections& xs, std::size_t first = 0) const;
 
  protected:
