@@ -22,10 +22,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// intersect_torus_batch sums the counts of a call in an int: calls of at
-// most this many rays keep that sum (4 roots a ray) in range.
-constexpr std::size_t kBatchChunk = std::size_t{1} << 24;
-
 using Doubles = py::array_t<double, py::array::c_style>;
 
 std::string shape_text(const py::array& a) {
@@ -111,10 +107,7 @@ py::tuple intersect_torus(const py::object& major_obj, const py::object& minor_o
   double* t = roots.mutable_data();
   {
     py::gil_scoped_release release;
-    for (std::size_t i = 0; i < n; i += kBatchChunk) {
-      const std::size_t m = std::min(kBatchChunk, n - i);
-      toroid::intersect_torus_batch(major, minor, m, o + 3 * i, d + 3 * i, c + i, t + 4 * i);
-    }
+    toroid::intersect_torus_batch(major, minor, n, o, d, c, t);
   }
   return py::make_tuple(counts, roots);
 }

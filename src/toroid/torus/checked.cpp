@@ -56,10 +56,10 @@ void torus_unit_normal(double major, double minor, const double p[3], double n[3
   for (int i = 0; i < 3; ++i) n[i] = m[i] / length;
 }
 
-int intersect_torus_batch(double major, double minor, std::size_t n, const double* origins, const double* directions,
-                          int* counts, double* roots) {
+long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,
+                                const double* directions, int* counts, double* roots) {
   const bool radii = torus_radii_valid(major, minor);
-  int total = 0;
+  long long total = 0;
   for (std::size_t i = 0; i < n; ++i) {
     double* row = roots + 4 * i;
     const int count = intersect_torus_checked(major, minor, origins + 3 * i, directions + 3 * i, row);

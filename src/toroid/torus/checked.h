@@ -44,8 +44,8 @@ void torus_unit_normal(double major, double minor, const double p[3], double n[3
 // ray with count -1 or 0). Every row is the single-ray call's answer, bit for
 // bit. This is a scalar loop over the rays; a SIMD version is to keep the
 // same answers. Returns -1 for invalid radii, else the number of roots of
-// all the rays together. n == 0 touches no array.
-int intersect_torus_batch(double major, double minor, std::size_t n, const double* origins, const double* directions,
-                          int* counts, double* roots);
+// all the rays together (a long long: 4 n overflows an int for n > 2^29). n == 0 touches no array.
+long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,
+                                const double* directions, int* counts, double* roots);
 
 }  // namespace toroid
