@@ -170,24 +170,6 @@ TEST(SceneWarnings, DocumentsLoadedWholeWarnOnce) {
             Lines{kDegrees});
 }
 
-// Found item by item before an item that loads only with the whole document
-// (it names a tag handle of the document's): the whole document's load finds
-// the same warning again, and it is given once.
-TEST(SceneWarnings, ALoadStartedItemByItemAndFinishedWholeWarnsOnce) {
-  const std::string text =
-      "%TAG !t! tag:toroid.example,2024:\n"
-      "---\n" +
-      kCamera +
-      "- add: torus\n"
-      "  transform:\n"
-      "    - [rotate-x, -90]\n"
-      "- add: !t!shape sphere\n";
-  const Lines expected{
-      "scene.yml:15:18: warning: rotate-x angle -90 is more than 2 pi radians (a full turn); if it is in degrees, "
-      "write -1.5708 (angles are in radians)"};
-  EXPECT_EQ(warnings_of(text), expected);
-}
-
 TEST(SceneWarnings, WarningsComeBeforeTheErrorThatStopsTheLoad) {
   const std::string text = kCamera +
                            "- add: torus\n"           // 11

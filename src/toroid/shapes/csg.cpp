@@ -58,7 +58,13 @@ bool intersection_allowed(CsgOp op, bool lhit, bool inl, bool inr) {
 }
 
 Csg::Csg(CsgOp op, std::shared_ptr<Shape> left, std::shared_ptr<Shape> right)
-    : op_(op), left_(std::move(left)), right_(std::move(right)) {
+    : op_(op),
+      left_(std::move(left)),
+      right_(std::move(right)),
+      left_is_csg_(dynamic_cast<const Csg*>(left_.get()) != nullptr),
+      right_is_csg_(dynamic_cast<const Csg*>(right_.get()) != nullptr),
+      one_piece_each_(dynamic_cast<const Group*>(left_.get()) == nullptr &&
+                      dynamic_cast<const Group*>(right_.get()) == nullptr) {
   left_->parent = this;
   right_->parent = this;
   child_bounds_changed();
@@ -85,6 +91,30 @@ Tuple Csg::local_normal_at(const Tuple&, const Intersection&) const {
   throw std::logic_error("local_normal_at called on a CSG shape: CSG has no surface of its own");
 }
 
+// The book's rule: one flag per operand, flipped at each of its crossings.
+void Csg::filter_one_piece_each(Intersections& xs, std::size_t first) const {
+  bool inl = false;
+  bool inr = false;
+  std::size_t kept = first;
+  for (std::size_t i = first; i < xs.size(); ++i) {
+    const Intersection x = xs[i];
+    // Whether x lies on the left operand: climb from its object towards this.
+    bool lhit = false;
+    for (const Shape* s = x.object; s != nullptr && s != this; s = s->parent)
+      if (s == left_.get()) {
+        lhit = true;
+        break;
+      }
+    if (intersection_allowed(op_, lhit, inl, inr)) xs[kept++] = x;
+    if (lhit) {
+      inl = !inl;
+    } else {
+      inr = !inr;
+    }
+  }
+  xs.resize(kept);
+}
+
 bool Csg::includes(const Shape* other) const { return is_within(other, *this); }
 
 void Csg::divide(std::size_t threshold) {
@@ -93,6 +123,10 @@ void Csg::divide(std::size_t threshold) {
 }
 
 void Csg::filter_intersections(Intersections& xs, std::size_t first) const {
+  if (one_piece_each_) {
+    filter_one_piece_each(xs, first);
+    return;
+  }
   const std::size_t n = xs.size() - first;
   Scratch<Piece, kInlineHits> pieces(n);            // the distinct pieces, first seen first
   Scratch<std::uint32_t, kInlineHits> piece_of(n);  // each intersection's piece
@@ -105,9 +139,10 @@ void Csg::filter_intersections(Intersections& xs, std::size_t first) const {
     if (s != nullptr)
       while (s->parent != nullptr && s->parent != this) {
         s = s->parent;
-        if (dynamic_cast<const Csg*>(s) != nullptr) piece = s;
+        if (s->parent != this && dynamic_cast<const Csg*>(s) != nullptr) piece = s;
       }
     const bool lhit = s != nullptr && s == left_.get();
+    if ((lhit && left_is_csg_) || (s != nullptr && s == right_.get() && right_is_csg_)) piece = s;
     std::size_t k = 0;
     while (k < count && pieces[k].shape != piece) ++k;
     if (k == count) pieces[count++] = Piece{piece, 0, lhit, false};

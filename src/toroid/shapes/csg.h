@@ -60,9 +60,16 @@ class Csg : public Shape {
   void child_bounds_changed() const override;
 
  private:
+  // filter_intersections where neither operand is a group.
+  void filter_one_piece_each(Intersections& xs, std::size_t first) const;
+
   CsgOp op_;
   std::shared_ptr<Shape> left_, right_;
   mutable BoundingBox bounds_;  // refreshed by child_bounds_changed at setup time
+  // Whether each operand is itself a CSG (one closed piece), and whether
+  // neither is a group (each is one piece: the book's rule, on a shorter
+  // path), known once so that the filter asks no operand's type.
+  bool left_is_csg_, right_is_csg_, one_piece_each_;
 };
 
 }  // namespace toroid

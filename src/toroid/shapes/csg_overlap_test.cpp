@@ -8,7 +8,6 @@
 #include <memory>
 #include <vector>
 
-#include "support/approx.h"
 #include "toroid/math/transform.h"
 #include "toroid/shapes/csg.h"
 #include "toroid/shapes/cube.h"
@@ -84,21 +83,52 @@ TEST(CsgOverlap, AGroupOfOverlappingSpheresActsAsTheirUnion) {
     const auto u0 = sphere_at(1, -0.3, 0, 0.5), u1 = sphere_at(1, 0.3, 0, 0.5), u2 = sphere_at(1.2, 0, 0.1, 0.35);
     const auto inner = std::make_shared<Csg>(CsgOp::Union, u1, u2);
     const Csg with_unions(op, doughnut(), std::make_shared<Csg>(CsgOp::Union, u0, inner));
+    // The same spheres in groups inside the group (as the bonus chapter's
+    // divide makes them): pieces further down than the operand's children.
+    const Csg with_subgroups(
+        op, doughnut(),
+        group_of({group_of({sphere_at(1, -0.3, 0, 0.5)}),
+                  group_of({sphere_at(1, 0.3, 0, 0.5), group_of({sphere_at(1.2, 0, 0.1, 0.35)})})}));
     int differing = 0, crossings = 0;
     for (int i = 0; i <= 40; ++i)
       for (int j = 0; j <= 40; ++j) {
         const double a = 0.3 + 1.2 * i / 40, b = -0.9 + 1.8 * j / 40;
         for (const Ray& r : {Ray{point(a, b, -5), vector(0, 0, 1)}, Ray{point(a, -5, b * 0.5), vector(0, 1, 0)},
                              Ray{point(-5, b, a - 0.75), vector(1, 0.05, 0.02)}}) {
-          const Intersections g = intersect(with_group, r), u = intersect(with_unions, r);
+          const Intersections g = intersect(with_group, r), u = intersect(with_unions, r),
+                              d = intersect(with_subgroups, r);
           crossings += static_cast<int>(g.size());
-          bool same = g.size() == u.size();
-          for (std::size_t k = 0; same && k < g.size(); ++k) same = g[k].t == u[k].t;
+          bool same = g.size() == u.size() && d.size() == u.size();
+          for (std::size_t k = 0; same && k < g.size(); ++k) same = g[k].t == u[k].t && d[k].t == u[k].t;
           differing += same ? 0 : 1;
         }
       }
     EXPECT_EQ(differing, 0);
     EXPECT_GT(crossings, 1000);
+  }
+}
+
+// csg.feature's "Filtering a list of intersections" with each operand in a
+// group of its own (the rule for groups, which must agree with the book
+// where nothing overlaps).
+TEST(CsgOverlap, FilteringAListOfIntersectionsOnGroupedOperands) {
+  struct Example {
+    CsgOp op;
+    std::size_t x0, x1;
+  };
+  const Example examples[] = {{CsgOp::Union, 0, 3}, {CsgOp::Intersection, 1, 2}, {CsgOp::Difference, 0, 1}};
+  for (const Example& e : examples) {
+    SCOPED_TRACE(static_cast<int>(e.op));
+    std::shared_ptr<Shape> s1 = std::make_shared<Sphere>(), s2 = std::make_shared<Cube>();
+    const Csg c(e.op, group_of({s1}), group_of({s2}));
+    const Intersections xs{{1, s1.get()}, {2, s2.get()}, {3, s1.get()}, {4, s2.get()}};
+    Intersections result = xs;
+    c.filter_intersections(result);
+    ASSERT_EQ(result.size(), 2u);
+    EXPECT_EQ(result[0].t, xs[e.x0].t);
+    EXPECT_EQ(result[0].object, xs[e.x0].object);
+    EXPECT_EQ(result[1].t, xs[e.x1].t);
+    EXPECT_EQ(result[1].object, xs[e.x1].object);
   }
 }
 
