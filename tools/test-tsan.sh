@@ -21,10 +21,13 @@ build=build-ci-tsan
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOROID_SANITIZE_THREAD=ON \
   -DTOROID_BUILD_BENCH=OFF -DTOROID_WERROR=ON -DCMAKE_PREFIX_PATH="$prefix" -DTBB_DIR="$prefix/lib/cmake/TBB" >/dev/null
 cmake --build "$build" -j "$(nproc)"
-# The tests must load the instrumented libtbb, not Debian's.
-if ! ldd "$build/tests/toroid_tests" | grep -q "$prefix/lib/libtbb"; then
+# The tests must load the instrumented libtbb, not Debian's. ldd's listing is
+# held in a variable first: under pipefail, `ldd | grep -q` fails whenever grep
+# stops reading early and ldd dies of SIGPIPE.
+libraries=$(ldd "$build/tests/toroid_tests")
+if [[ "$libraries" != *"$prefix/lib/libtbb"* ]]; then
   echo "toroid: $build/tests/toroid_tests does not load $prefix/lib/libtbb:" >&2
-  ldd "$build/tests/toroid_tests" | grep tbb >&2
+  grep tbb <<<"$libraries" >&2
   exit 1
 fi
 export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:history_size=4
