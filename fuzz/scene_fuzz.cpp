@@ -2,7 +2,7 @@
 // Fuzz target: the YAML scene loader. Any input must load or throw SceneError;
 // anything else (a crash, another exception, a hang) is a bug. Loaded item by
 // item (the default) and as a whole document, it must give the same result:
-// both load, or both fail with the same message.
+// both load, or both fail with the same message, and with the same warnings.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -13,17 +13,19 @@
 
 namespace {
 
-// "" when the scene loads, else its message.
+// The warnings, one per line, then the message ("" when the scene loads).
 std::string outcome(const std::string& text, bool whole_document) {
   toroid::SceneLoadOptions options;
   options.whole_document = whole_document;
+  std::string out;
+  options.on_warning = [&](const std::string& w) { out += w + "\n"; };
   try {
     // Relative OBJ names resolve into a folder that does not exist.
     toroid::load_scene_from_string(text, "fuzz.yml", "/nonexistent/toroid-fuzz", options);
   } catch (const toroid::SceneError& e) {
-    return e.what();
+    out += e.what();
   }
-  return "";
+  return out;
 }
 
 }  // namespace

@@ -71,6 +71,22 @@ TEST_F(RenderCommand, SceneErrorsExit2WithoutOutput) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// A warning does not stop the render; it has the prefix that errors have,
+// and --quiet does not hide it.
+TEST_F(RenderCommand, WarningsCarryThePrefixAndTheRenderGoesOn) {
+  const fs::path scene = dir_ / "degrees.yml";
+  std::ofstream(scene) << "- add: camera\n  width: 8\n  height: 6\n  field-of-view: 0.8\n"
+                          "  from: [0, 2, -5]\n  to: [0, 0, 0]\n  up: [0, 1, 0]\n"
+                          "- add: sphere\n  transform:\n    - [rotate-x, 90]\n";
+  const fs::path out = dir_ / "d.png";
+  std::string err;
+  EXPECT_EQ(run("render " + scene.string() + " -o " + out.string() + " --quiet", &err), 0) << err;
+  EXPECT_EQ(err, "toroid render: " + scene.string() +
+                     ":10:18: warning: rotate-x angle 90 is more than 2 pi radians (a full turn); if it is in "
+                     "degrees, write 1.5708 (angles are in radians)\n");
+  EXPECT_TRUE(fs::exists(out));
+}
+
 // Starts `toroid ARGS...` (stderr to `err`) and returns its process id.
 pid_t spawn_toroid(const std::vector<std::string>& args, const fs::path& err) {
   std::vector<std::string> argv_s{TOROID_BINARY};

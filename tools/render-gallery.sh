@@ -49,6 +49,11 @@ if [[ "$which" == stress || "$which" == all ]]; then
 fi
 
 if [[ "$which" == tori || "$which" == all ]]; then
-  # A capped partial torus: the README's half-eaten doughnut closed into a solid (its camera and size).
+  # The README's scenes of tori. bitten-doughnut: the half-eaten doughnut
+  # closed into a solid (its camera and size).
+  render three-doughnuts.png scenes/three-doughnuts.yaml --samples 16
+  for s in half-eaten-doughnut spindle-torus soft-shadow-doughnut textured-bagel; do
+    render "$s.png" "scenes/$s.yaml" --samples 4
+  done
   render bitten-doughnut.png scenes/bitten-doughnut.yaml --samples 16
 fi

@@ -93,6 +93,8 @@ int run_render(const RenderCommandOptions& opt) {
   }
   SceneLoadOptions load_options;
   if (!opt.solver.empty()) load_options.solver = solver_from_name(opt.solver);
+  // Warnings carry the prefix that errors have, and print even with --quiet.
+  load_options.on_warning = [](const std::string& w) { std::cerr << "toroid render: " << w << "\n"; };
   std::optional<Scene> scene;
   try {
     scene.emplace(load_scene(opt.scene, load_options));
