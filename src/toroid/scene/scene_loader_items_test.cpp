@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "support/scene_load.h"
+#include "support/scene_text.h"
 #include "toroid/scene/scene_loader.h"
 #include "toroid/shapes/shape.h"
 
@@ -14,14 +16,7 @@ namespace {
 
 // The message of the SceneError that loading `text` throws ("" when it loads).
 std::string error_of(const std::string& text, bool whole_document) {
-  SceneLoadOptions options;
-  options.whole_document = whole_document;
-  try {
-    load_scene_from_string(text, "s.yml", ".", options);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
+  return testing::load_text(text, "s.yml", whole_document).error;
 }
 
 void expect_error_both_ways(const std::string& text, const std::string& message) {
@@ -29,18 +24,8 @@ void expect_error_both_ways(const std::string& text, const std::string& message)
   EXPECT_EQ(error_of(text, true), message) << "whole document";
 }
 
-const std::string kCamera =
-    "- add: camera\n"            // 1
-    "  width: 8\n"               // 2
-    "  height: 6\n"              // 3
-    "  field-of-view: 0.8\n"     // 4
-    "  from: [0, 2, -5]\n"       // 5
-    "  to: [0, 0, 0]\n"          // 6
-    "  up: [0, 1, 0]\n"          // 7
-    "# the light\n"              // 8
-    "- add: light\n"             // 9
-    "  at: [-10, 10, -10]\n"     // 10
-    "  intensity: [1, 1, 1]\n";  // 11
+// Lines 1-7 the camera, 8 a comment, 9-11 the light.
+const std::string kCamera = testing::kSceneCamera + "# the light\n" + testing::kSceneLight;
 
 TEST(SceneLoaderItems, AnErrorInTheThirdItemHasItsFileLineAndColumn) {
   expect_error_both_ways(kCamera +

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "support/approx.h"
+#include "support/scene_load.h"
+#include "support/scene_text.h"
 #include "toroid/math/transform.h"
 #include "toroid/scene/scene_loader.h"
 #include "toroid/shapes/shape.h"
@@ -21,34 +23,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kCamera =
-    "- add: camera\n"            // 1
-    "  width: 8\n"               // 2
-    "  height: 6\n"              // 3
-    "  field-of-view: 0.8\n"     // 4
-    "  from: [0, 2, -5]\n"       // 5
-    "  to: [0, 0, 0]\n"          // 6
-    "  up: [0, 1, 0]\n"          // 7
-    "- add: light\n"             // 8
-    "  at: [-10, 10, -10]\n"     // 9
-    "  intensity: [1, 1, 1]\n";  // 10
+// Lines 1-7 the camera, 8-10 the light.
+const std::string kCamera = testing::kSceneCamera + testing::kSceneLight;
 
-struct Loaded {
-  std::vector<std::string> warnings;
-  std::string error;  // the SceneError's message, "" when the scene loads
-};
+using Loaded = testing::LoadedText;
 
 Loaded load(const std::string& text, bool whole_document) {
-  Loaded out;
-  SceneLoadOptions options;
-  options.whole_document = whole_document;
-  options.on_warning = [&](const std::string& w) { out.warnings.push_back(w); };
-  try {
-    load_scene_from_string(text, "scene.yml", ".", options);
-  } catch (const SceneError& e) {
-    out.error = e.what();
-  }
-  return out;
+  return testing::load_text(text, "scene.yml", whole_document);
 }
 
 // The warnings of a scene that loads, the same item by item and whole.

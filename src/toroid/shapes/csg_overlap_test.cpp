@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "support/csg_operands.h"
 #include "toroid/math/transform.h"
 #include "toroid/shapes/csg.h"
 #include "toroid/shapes/cube.h"
@@ -19,10 +20,11 @@
 namespace toroid {
 namespace {
 
+using testing::group_of;
+using testing::intersections_of;
+
 std::shared_ptr<Sphere> sphere_at(double x, double y, double z, double radius) {
-  auto s = std::make_shared<Sphere>();
-  s->set_transform(translation(x, y, z) * scaling(radius, radius, radius));
-  return s;
+  return testing::sphere_with(translation(x, y, z) * scaling(radius, radius, radius));
 }
 
 // The torus of the tests: R = 1, r = 0.25, its ring in the xy plane.
@@ -33,18 +35,6 @@ std::shared_ptr<Torus> doughnut() { return std::make_shared<Torus>(1.0, 0.25); }
 // tube.
 std::vector<std::shared_ptr<Shape>> overlapping_pair() {
   return {sphere_at(1, -0.3, 0, 0.5), sphere_at(1, 0.3, 0, 0.5)};
-}
-
-std::shared_ptr<Group> group_of(const std::vector<std::shared_ptr<Shape>>& shapes) {
-  auto g = std::make_shared<Group>();
-  for (const auto& s : shapes) g->add_child(s);
-  return g;
-}
-
-Intersections intersect(const Shape& s, const Ray& r) {
-  Intersections xs;
-  s.intersect(r, xs);
-  return xs;
 }
 
 TEST(CsgOverlap, AGroupOfOverlappingSpheresCutsATorusWithNoSliceLeftBetweenThem) {
@@ -58,14 +48,14 @@ TEST(CsgOverlap, AGroupOfOverlappingSpheresCutsATorusWithNoSliceLeftBetweenThem)
   Intersections raw;
   torus->intersect(through_overlap, raw);
   ASSERT_EQ(raw.size(), 2u);  // the ray does cross the tube
-  EXPECT_TRUE(intersect(bite, through_overlap).empty());
+  EXPECT_TRUE(intersections_of(bite, through_overlap).empty());
   // Two more rays through the overlap, where both spheres hold the tube.
-  EXPECT_TRUE(intersect(bite, {point(1.15, -0.04, -5), vector(0, 0, 1)}).empty());
-  EXPECT_TRUE(intersect(bite, {point(0.5, -1, -5), vector(0.1, 0.2, 1)}).empty());
+  EXPECT_TRUE(intersections_of(bite, {point(1.15, -0.04, -5), vector(0, 0, 1)}).empty());
+  EXPECT_TRUE(intersections_of(bite, {point(0.5, -1, -5), vector(0.1, 0.2, 1)}).empty());
   // Beside the spheres the tube stands: through (0.6, 0.8), on the tube's
   // centre circle, the ray crosses the tube and neither sphere.
   const Ray beside{point(0.6, 0.8, -5), vector(0, 0, 1)};
-  const Intersections kept = intersect(bite, beside);
+  const Intersections kept = intersections_of(bite, beside);
   ASSERT_EQ(kept.size(), 2u);
   EXPECT_EQ(kept[0].object, torus.get());
   EXPECT_EQ(kept[1].object, torus.get());
@@ -95,8 +85,8 @@ TEST(CsgOverlap, AGroupOfOverlappingSpheresActsAsTheirUnion) {
         const double a = 0.3 + 1.2 * i / 40, b = -0.9 + 1.8 * j / 40;
         for (const Ray& r : {Ray{point(a, b, -5), vector(0, 0, 1)}, Ray{point(a, -5, b * 0.5), vector(0, 1, 0)},
                              Ray{point(-5, b, a - 0.75), vector(1, 0.05, 0.02)}}) {
-          const Intersections g = intersect(with_group, r), u = intersect(with_unions, r),
-                              d = intersect(with_subgroups, r);
+          const Intersections g = intersections_of(with_group, r), u = intersections_of(with_unions, r),
+                              d = intersections_of(with_subgroups, r);
           crossings += static_cast<int>(g.size());
           bool same = g.size() == u.size() && d.size() == u.size();
           for (std::size_t k = 0; same && k < g.size(); ++k) same = g[k].t == u[k].t && d[k].t == u[k].t;
@@ -112,24 +102,9 @@ TEST(CsgOverlap, AGroupOfOverlappingSpheresActsAsTheirUnion) {
 // group of its own (the rule for groups, which must agree with the book
 // where nothing overlaps).
 TEST(CsgOverlap, FilteringAListOfIntersectionsOnGroupedOperands) {
-  struct Example {
-    CsgOp op;
-    std::size_t x0, x1;
-  };
-  const Example examples[] = {{CsgOp::Union, 0, 3}, {CsgOp::Intersection, 1, 2}, {CsgOp::Difference, 0, 1}};
-  for (const Example& e : examples) {
-    SCOPED_TRACE(static_cast<int>(e.op));
-    std::shared_ptr<Shape> s1 = std::make_shared<Sphere>(), s2 = std::make_shared<Cube>();
-    const Csg c(e.op, group_of({s1}), group_of({s2}));
-    const Intersections xs{{1, s1.get()}, {2, s2.get()}, {3, s1.get()}, {4, s2.get()}};
-    Intersections result = xs;
-    c.filter_intersections(result);
-    ASSERT_EQ(result.size(), 2u);
-    EXPECT_EQ(result[0].t, xs[e.x0].t);
-    EXPECT_EQ(result[0].object, xs[e.x0].object);
-    EXPECT_EQ(result[1].t, xs[e.x1].t);
-    EXPECT_EQ(result[1].object, xs[e.x1].object);
-  }
+  testing::expect_filtering_a_list_of_intersections([](CsgOp op, std::shared_ptr<Shape> s1, std::shared_ptr<Shape> s2) {
+    return std::make_shared<Csg>(op, group_of({s1}), group_of({s2}));
+  });
 }
 
 // A cube of twelve triangles: each triangle is crossed once, so the mesh's
@@ -156,7 +131,7 @@ TEST(CsgOverlap, AClosedMeshOfTrianglesKeepsTheBooksRule) {
   const Csg cube_cut(CsgOp::Difference, std::make_shared<Sphere>(), scaled(std::make_shared<Cube>()));
   for (const double x : {-0.31, -0.13, 0.07, 0.29}) {
     const Ray r{point(x, 0.11, -5), vector(0, 0, 1)};
-    const Intersections m = intersect(mesh_cut, r), c = intersect(cube_cut, r);
+    const Intersections m = intersections_of(mesh_cut, r), c = intersections_of(cube_cut, r);
     ASSERT_EQ(m.size(), c.size()) << x;
     ASSERT_EQ(m.size(), 4u) << x;  // the sphere, the cube's near face, its far face, the sphere
     for (std::size_t k = 0; k < m.size(); ++k) EXPECT_NEAR(m[k].t, c[k].t, 1e-12) << x << " " << k;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "support/approx.h"
+#include "support/csg_operands.h"
 #include "support/recording_shape.h"
 #include "toroid/math/transform.h"
 #include "toroid/shapes/cube.h"
@@ -15,17 +16,8 @@
 namespace toroid {
 namespace {
 
-std::shared_ptr<Sphere> sphere_with(const Matrix4& transform) {
-  auto s = std::make_shared<Sphere>();
-  s->set_transform(transform);
-  return s;
-}
-
-Intersections local_intersect(const Shape& s, const Ray& r) {
-  Intersections xs;
-  s.local_intersect(r, xs);
-  return xs;
-}
+using testing::local_intersections_of;
+using testing::sphere_with;
 
 TEST(Csg, CsgIsCreatedWithAnOperationAndTwoShapes) {
   auto s1 = std::make_shared<Sphere>();
@@ -62,37 +54,20 @@ TEST(Csg, EvaluatingTheRuleForACsgOperation) {
 }
 
 TEST(Csg, FilteringAListOfIntersections) {
-  struct Example {
-    CsgOp op;
-    std::size_t x0, x1;
-  };
-  const Example examples[] = {{CsgOp::Union, 0, 3}, {CsgOp::Intersection, 1, 2}, {CsgOp::Difference, 0, 1}};
-  for (const Example& e : examples) {
-    SCOPED_TRACE(static_cast<int>(e.op));
-    auto s1 = std::make_shared<Sphere>();
-    auto s2 = std::make_shared<Cube>();
-    const Csg c(e.op, s1, s2);
-    const Intersections xs{{1, s1.get()}, {2, s2.get()}, {3, s1.get()}, {4, s2.get()}};
-    Intersections result = xs;
-    c.filter_intersections(result);
-    ASSERT_EQ(result.size(), 2u);
-    EXPECT_EQ(result[0].t, xs[e.x0].t);
-    EXPECT_EQ(result[0].object, xs[e.x0].object);
-    EXPECT_EQ(result[1].t, xs[e.x1].t);
-    EXPECT_EQ(result[1].object, xs[e.x1].object);
-  }
+  testing::expect_filtering_a_list_of_intersections(
+      [](CsgOp op, std::shared_ptr<Shape> s1, std::shared_ptr<Shape> s2) { return std::make_shared<Csg>(op, s1, s2); });
 }
 
 TEST(Csg, ARayMissesACsgObject) {
   const Csg c(CsgOp::Union, std::make_shared<Sphere>(), std::make_shared<Cube>());
-  EXPECT_TRUE(local_intersect(c, {point(0, 2, -5), vector(0, 0, 1)}).empty());
+  EXPECT_TRUE(local_intersections_of(c, {point(0, 2, -5), vector(0, 0, 1)}).empty());
 }
 
 TEST(Csg, ARayHitsACsgObject) {
   auto s1 = std::make_shared<Sphere>();
   auto s2 = sphere_with(translation(0, 0, 0.5));
   const Csg c(CsgOp::Union, s1, s2);
-  const Intersections xs = local_intersect(c, {point(0, 0, -5), vector(0, 0, 1)});
+  const Intersections xs = local_intersections_of(c, {point(0, 0, -5), vector(0, 0, 1)});
   ASSERT_EQ(xs.size(), 2u);
   EXPECT_NEAR(xs[0].t, 4, kEpsilon);
   EXPECT_EQ(xs[0].object, s1.get());

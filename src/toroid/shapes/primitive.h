@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// A shape with a surface of its own and at most four intersections along
-// any ray (sphere, plane, cube, cylinder, cone, triangle, torus). Derived
-// lists them once, into a fixed array, with
+// A shape with a surface of its own and at most MaxHits intersections along
+// any ray: four for most (sphere, plane, cube, cylinder, cone, triangle),
+// more for a capped partial torus. Derived lists them once, into a fixed
+// array, with
 //   int find_hits(const Ray& local_ray, Intersection hits[kMaxHits]) const;
 // (every intersection, any t, in the order local_intersect lists them;
 // returns how many), and the renderer's queries (nearest hit, shadow test)
 // read them from there instead of from a growing list. The template calls
-// find_hits directly: one virtual call per shape and query, not two.
+// find_hits directly: one virtual call per shape and query, not two. The
+// capacity is a template parameter so that the four-hit shapes keep arrays
+// of four: the array's elements are initialised on every call.
 #pragma once
 
 #include "toroid/shapes/shape.h"
@@ -15,10 +18,10 @@ namespace toroid {
 
 inline constexpr int kMaxPrimitiveHits = 4;
 
-template <typename Derived>
+template <typename Derived, int MaxHits = kMaxPrimitiveHits>
 class Primitive : public Shape {
  public:
-  static constexpr int kMaxHits = kMaxPrimitiveHits;
+  static constexpr int kMaxHits = MaxHits;
 
   void local_intersect(const Ray& local_ray, Intersections& xs) const final {
     Intersection hits[kMaxHits];

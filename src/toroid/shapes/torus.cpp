@@ -66,25 +66,6 @@ int quadratic_roots(double a, double b, double c, double sqrt_disc, double t[2])
   return n;
 }
 
-// The queries' readings of a list of hits (as Primitive's): the nearest
-// with 0 <= t < t_max, and whether there is one.
-bool nearest_of(const Intersection* hits, int n, double t_max, Intersection& hit) {
-  bool found = false;
-  for (int i = 0; i < n; ++i)
-    if (hits[i].t >= 0 && hits[i].t < t_max) {
-      hit = hits[i];
-      t_max = hits[i].t;
-      found = true;
-    }
-  return found;
-}
-
-bool any_before(const Intersection* hits, int n, double t_max) {
-  for (int i = 0; i < n; ++i)
-    if (hits[i].t >= 0 && hits[i].t < t_max) return true;
-  return false;
-}
-
 }  // namespace
 
 bool TorusSweep::valid() const {
@@ -291,21 +272,6 @@ int Torus::add_cap_hits(const Ray& ray, Intersection hits[kMaxHits], int n) cons
   return n;
 }
 
-// The queries below read find_hits's list from an array no larger than it
-// needs: an uncapped torus's has room for the tube's hits only (the array's
-// elements are initialised on every call).
-void Torus::local_intersect(const Ray& ray, Intersections& xs) const {
-  if (capped_) {
-    Intersection hits[kMaxHits];
-    const int n = find_hits(ray, hits);
-    xs.insert(xs.end(), hits, hits + n);
-    return;
-  }
-  Intersection hits[kMaxTubeHits];
-  const int n = tube_hits(ray, hits);
-  xs.insert(xs.end(), hits, hits + n);
-}
-
 bool Torus::nearest_root(const Ray& ray, double t_max, double& t) const {
   // Most rays that reach a torus's box miss the torus, or meet it beyond
   // t_max (a nearer hit, the light): the washer turns them away cheaply.
@@ -316,14 +282,7 @@ bool Torus::nearest_root(const Ray& ray, double t_max, double& t) const {
 }
 
 bool Torus::local_intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const {
-  if (!keeps_all_) {
-    if (capped_) {
-      Intersection hits[kMaxHits];
-      return nearest_of(hits, find_hits(ray, hits), t_max, hit);
-    }
-    Intersection hits[kMaxTubeHits];
-    return nearest_of(hits, tube_hits(ray, hits), t_max, hit);
-  }
+  if (!keeps_all_) return Primitive::local_intersect_nearest(ray, t_max, hit);
   double t;
   if (!nearest_root(ray, t_max, t)) return false;
   hit = {t, this};
@@ -331,14 +290,7 @@ bool Torus::local_intersect_nearest(const Ray& ray, double t_max, Intersection& 
 }
 
 bool Torus::local_blocks(const Ray& ray, double t_max) const {
-  if (!keeps_all_) {
-    if (capped_) {
-      Intersection hits[kMaxHits];
-      return any_before(hits, find_hits(ray, hits), t_max);
-    }
-    Intersection hits[kMaxTubeHits];
-    return any_before(hits, tube_hits(ray, hits), t_max);
-  }
+  if (!keeps_all_) return Primitive::local_blocks(ray, t_max);
   if (!washer().may_meet(ray.origin, ray.direction, kBelowZero, t_max)) return false;
   const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
   const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};

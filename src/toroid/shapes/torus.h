@@ -12,7 +12,7 @@
 #include <numbers>
 
 #include "toroid/shapes/annular_cylinder.h"
-#include "toroid/shapes/shape.h"
+#include "toroid/shapes/primitive.h"
 #include "toroid/torus/solver.h"
 
 namespace toroid {
@@ -48,15 +48,14 @@ enum class TorusFace : std::uint8_t {
   PhiMax,      // ... at phi_max
 };
 
-// A shape with a surface of its own, like the primitives of primitive.h, but
-// with up to kMaxHits intersections along a ray: a capped partial torus has
-// more than four.
-class Torus : public Shape {
+// The most intersections of a torus along a ray: the quartic's 4 roots; with
+// caps also one on each theta cap and two on each phi cap.
+inline constexpr int kMaxTorusHits = 10;
+
+class Torus : public Primitive<Torus, kMaxTorusHits> {
  public:
-  // The quartic's 4 roots; with caps also one on each theta cap and two on
-  // each phi cap.
+  // The tube's hits alone (the quartic's roots).
   static constexpr int kMaxTubeHits = 4;
-  static constexpr int kMaxHits = 10;
 
   // Precondition: major > 0, minor > 0, both finite (the scene loader checks).
   Torus(double major = 1.0, double minor = 0.25) : major_(major), minor_(minor) {}
@@ -112,8 +111,6 @@ class Torus : public Shape {
   // its caps' hits, each with its face in Intersection::u (face_of), all
   // sorted by t. Returns how many (at most kMaxHits).
   int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
-  // Every hit, as find_hits lists them.
-  void local_intersect(const Ray& ray, Intersections& xs) const final;
   // The tube's normal, or a cap's outward normal for a hit on a cap.
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
   // The solver's nearest-root query (no list, early exit) when every root is
