@@ -4,6 +4,6 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 tools/install-deps.sh --tests
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DTOROID_PYTHON=ON -DTOROID_EMBREE=ON >/dev/null
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DTOROID_PYTHON=ON -DTOROID_EMBREE=ON -DTOROID_MPI=ON >/dev/null
 cmake --build build
 ctest --test-dir build --output-on-failure -j "$(nproc)"

@@ -3,15 +3,16 @@
 # Installs the Debian 12 packages toroid needs, only those that are missing.
 #   tools/install-deps.sh [--tests] [PACKAGE...]
 # --tests adds what the whole test suite needs beyond the renderer's build:
-# the Python module's and the Embree adapter's packages, and clang (the
-# consumer test that links the GCC-built archive with clang).
+# the Python module's, the Embree adapter's and Open MPI's packages (the MPI
+# render tests), and clang (the consumer test that links the GCC-built
+# archive with clang).
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config ccache
   libgtest-dev libgmock-dev libbenchmark-dev libyaml-cpp-dev libpng-dev libcli11-dev
   libtbb-dev libtinyobjloader-dev libmpfr-dev libgmp-dev)
 for arg in "$@"; do
   if [ "$arg" = --tests ]; then
-    packages+=(python3-dev python3-numpy python3-pybind11 pybind11-dev libembree-dev clang)
+    packages+=(python3-dev python3-numpy python3-pybind11 pybind11-dev libembree-dev libopenmpi-dev openmpi-bin clang)
   else
     packages+=("$arg")
   fi

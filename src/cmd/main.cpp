@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // The `toroid` command line: a thin layer over the library.
 #include <CLI/CLI.hpp>
+#include <iostream>
+#include <sstream>
 
 #include "cmd/cli.h"
 #include "cmd/intersect_command.h"
+#include "cmd/mpi_launch.h"
 #include "cmd/render_command.h"
 
 int main(int argc, char** argv) {
@@ -20,6 +23,14 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    // Under mpirun every rank reads the same command line: rank 0 alone says
+    // what is wrong (or prints the help), and every rank exits with the same
+    // status.
+    static std::ostringstream discard;  // outlives the streams' use at exit
+    if (toroid::cmd::launcher_rank() != 0) {
+      std::cout.rdbuf(discard.rdbuf());
+      std::cerr.rdbuf(discard.rdbuf());
+    }
     // --help and --version exit 0; every usage error exits 2.
     return toroid::cmd::exit_on_parse_error(app, e);
   }

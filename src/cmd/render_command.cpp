@@ -14,24 +14,14 @@
 #include <string>
 
 #include "cmd/cli.h"
+#include "cmd/mpi_launch.h"
+#include "cmd/render_job.h"
 #include "toroid/io/image_writer.h"
 #include "toroid/render/image_limits.h"
 #include "toroid/render/renderer.h"
 #include "toroid/scene/scene_loader.h"
 
 namespace toroid::cmd {
-namespace {
-
-struct RenderCommandOptions {
-  std::string scene;
-  std::string output;
-  std::optional<int> width, height;
-  int samples = 1;
-  std::optional<int> threads;
-  int max_depth = kDefaultRemaining;
-  std::string solver;
-  bool quiet = false;
-};
 
 std::string format_duration(double s) {
   if (!std::isfinite(s) || s < 0) return "--:--";
@@ -57,6 +47,12 @@ void draw_bar(const RenderProgress& p) {
   std::fflush(stderr);
 }
 
+void clear_bar() { std::fputs("\r\x1b[K", stderr); }
+
+bool shows_bar(const RenderCommandOptions& opt) { return !opt.quiet && isatty(STDERR_FILENO); }
+
+namespace {
+
 // SIGINT / SIGTERM: the handler only records the signal; the render skips its
 // remaining tiles, or the image write stops and removes its temporary file,
 // and the command exits 128 + signal without writing.
@@ -69,6 +65,8 @@ extern "C" void on_interrupt(int sig) {
   g_interrupted.store(true, std::memory_order_relaxed);
 }
 
+}  // namespace
+
 void catch_interrupts() {
   struct sigaction sa {};
   sa.sa_handler = on_interrupt;
@@ -77,66 +75,105 @@ void catch_interrupts() {
   sigaction(SIGTERM, &sa, nullptr);
 }
 
-int interrupted_exit() {
-  std::cerr << "toroid render: interrupted; nothing written\n";
+const std::atomic<bool>& interrupted() { return g_interrupted; }
+
+int interrupted_exit(bool say) {
+  if (say) std::cerr << "toroid render: interrupted; nothing written\n";
   return 128 + g_signal;
 }
 
-int run_render(const RenderCommandOptions& opt) {
-  catch_interrupts();
+PreparedRender prepare_render(const RenderCommandOptions& opt, bool check_output,
+                              const std::function<void(const std::string&)>& on_warning) {
+  PreparedRender out;
   // Everything that can be checked is checked before the render starts.
-  try {
-    check_image_path(opt.output);
-  } catch (const ImageWriteError& e) {
-    std::cerr << "toroid render: " << e.what() << "\n";
-    return 2;
+  if (check_output) {
+    try {
+      check_image_path(opt.output);
+    } catch (const ImageWriteError& e) {
+      out.error = e.what();
+      return out;
+    }
   }
   SceneLoadOptions load_options;
   if (!opt.solver.empty()) load_options.solver = solver_from_name(opt.solver);
-  // Warnings carry the prefix that errors have, and print even with --quiet.
-  load_options.on_warning = [](const std::string& w) { std::cerr << "toroid render: " << w << "\n"; };
+  load_options.on_warning = on_warning;
   std::optional<Scene> scene;
   try {
     scene.emplace(load_scene(opt.scene, load_options));
   } catch (const SceneError& e) {
-    std::cerr << "toroid render: " << e.what() << "\n";
-    return 2;
+    out.error = e.what();
+    return out;
   }
   Camera camera = scene->camera;
   if (opt.width || opt.height) {
     const int w = opt.width.value_or(camera.hsize()), h = opt.height.value_or(camera.vsize());
     if (const std::string e = image_size_error(w, h); !e.empty()) {
-      std::cerr << "toroid render: image size: " << e << "\n";
-      return 2;
+      out.error = "image size: " + e;
+      return out;
     }
     camera = Camera(w, h, camera.field_of_view());
     camera.set_transform(scene->camera.transform());
   }
-  if (g_interrupted) return interrupted_exit();
-
   RenderOptions ro;
   ro.samples = opt.samples;
   ro.threads = opt.threads.value_or(0);
   ro.max_depth = opt.max_depth;
-  const bool show_bar = !opt.quiet && isatty(STDERR_FILENO);
-  if (show_bar) ro.progress = draw_bar;
+  ro.tile_size = opt.tile_size;
   ro.cancel = &g_interrupted;
-  RenderStats stats;
-  const Canvas canvas = render_image(camera, scene->world, ro, &stats);
-  if (show_bar) std::fputs("\r\x1b[K", stderr);
-  if (stats.cancelled || g_interrupted) return interrupted_exit();
+  out.job.emplace(RenderJob{std::move(*scene), camera, ro});
+  out.exit_code = 0;
+  return out;
+}
 
+int write_output(const Canvas& canvas, const RenderCommandOptions& opt) {
   try {
     if (!write_image(canvas, opt.output, &g_interrupted)) return interrupted_exit();
   } catch (const std::exception& e) {
     std::cerr << "toroid render: " << e.what() << "\n";
     return 1;
   }
-  if (!opt.quiet) {
-    std::fprintf(stderr, "%dx%d, %d samples, %d threads, %.2f s, %llu rays, %.2f Mrays/s\n", canvas.width(),
-                 canvas.height(), ro.samples, stats.threads, stats.seconds, static_cast<unsigned long long>(stats.rays),
-                 stats.seconds > 0 ? static_cast<double>(stats.rays) / stats.seconds / 1e6 : 0.0);
+  return 0;
+}
+
+void print_summary(const Canvas& canvas, int samples, const std::string& workers, double seconds, std::uint64_t rays) {
+  std::fprintf(stderr, "%dx%d, %d samples, %s, %.2f s, %llu rays, %.2f Mrays/s\n", canvas.width(), canvas.height(),
+               samples, workers.c_str(), seconds, static_cast<unsigned long long>(rays),
+               seconds > 0 ? static_cast<double>(rays) / seconds / 1e6 : 0.0);
+}
+
+namespace {
+
+int run_render(const RenderCommandOptions& opt) {
+  catch_interrupts();
+  if (launched_by_mpi()) {
+#ifdef TOROID_HAVE_MPI
+    return run_render_mpi(opt);
+#else
+    if (launcher_rank() == 0)
+      std::cerr << "toroid render: started by mpirun, but this toroid was built without MPI: install Open MPI "
+                   "(Debian: libopenmpi-dev) and build again (TOROID_MPI)\n";
+    return 2;
+#endif
   }
+  // Warnings carry the prefix that errors have, and print even with --quiet.
+  PreparedRender prepared =
+      prepare_render(opt, true, [](const std::string& w) { std::cerr << "toroid render: " << w << "\n"; });
+  if (!prepared.job) {
+    std::cerr << "toroid render: " << prepared.error << "\n";
+    return prepared.exit_code;
+  }
+  RenderJob& job = *prepared.job;
+  if (g_interrupted) return interrupted_exit();
+
+  const bool show_bar = shows_bar(opt);
+  if (show_bar) job.options.progress = draw_bar;
+  RenderStats stats;
+  const Canvas canvas = render_image(job.camera, job.scene.world, job.options, &stats);
+  if (show_bar) clear_bar();
+  if (stats.cancelled || g_interrupted) return interrupted_exit();
+  if (const int code = write_output(canvas, opt); code != 0) return code;
+  if (!opt.quiet)
+    print_summary(canvas, job.options.samples, std::to_string(stats.threads) + " threads", stats.seconds, stats.rays);
   return 0;
 }
 
@@ -151,7 +188,10 @@ void add_render_command(CLI::App& app, int& exit_code) {
                           "while it renders, a progress bar when stderr is a terminal.\n"
                           "\nExample:\n  ") +
               kRenderExample + "\n\n" + kDocsLine + "\nEvery error message and exit status: docs/errors.md.");
-  sub->add_option("scene", opt->scene, "Scene file (.yml/.yaml)")->required()->check(CLI::ExistingFile);
+  CLI::Option* scene = sub->add_option("scene", opt->scene, "Scene file (.yml/.yaml)")->required();
+  // Under mpirun the scene is read by every rank, and a rank that cannot read
+  // it says so through rank 0 (run_render_mpi), not alone.
+  if (!launched_by_mpi()) scene->check(CLI::ExistingFile);
   sub->add_option("-o,--output", opt->output, "Output image: .png (8-bit sRGB) or .ppm (the book's plain PPM)")
       ->required();
   const auto side = CLI::Range(1, kMaxImageSide);
@@ -165,6 +205,11 @@ void add_render_command(CLI::App& app, int& exit_code) {
   sub->add_option("--threads", opt->threads, "Worker threads (>= 1; default: every core)")->check(CLI::Range(1, 4096));
   sub->add_option("--max-depth", opt->max_depth, "Reflection/refraction recursion limit (>= 0)")
       ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  sub->add_option("--tile-size", opt->tile_size,
+                  "Tile side in pixels: the unit of work of a thread, and of a rank under mpirun (the image is the "
+                  "same)")
+      ->check(CLI::Range(1, 1024))
       ->capture_default_str();
   sub->add_option("--solver", opt->solver, "Quartic solver for every torus (overrides the scene's 'solver:')")
       ->check(CLI::IsMember({"default", "ferrari", "tianheng"}));

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <vector>
 
 #include "toroid/math/hash.h"
 
@@ -33,16 +34,20 @@ void sample_offset(int x, int y, int s, int n, double& dx, double& dy) {
   dy = ((s / cols) + unit_interval(h2)) / rows;
 }
 
-Canvas render_image(const Camera& camera, const World& world, const RenderOptions& options, RenderStats* stats) {
+PixelRect TileGrid::rect(int tile) const {
+  const int x0 = (tile % columns()) * size, y0 = (tile / columns()) * size;
+  return {x0, y0, std::min(width, x0 + size), std::min(height, y0 + size)};
+}
+
+RenderStats render_tiles(const Camera& camera, const World& world, const RenderOptions& options, int first, int count,
+                         const TileSink& sink) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
-  const int w = camera.hsize(), h = camera.vsize();
-  Canvas canvas(w, h);
+  const TileGrid grid{camera.hsize(), camera.vsize(), std::max(1, options.tile_size)};
   const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   const int samples = std::max(1, options.samples);
-  const int tile = std::max(1, options.tile_size);
-  const int tiles_x = (w + tile - 1) / tile, tiles_y = (h + tile - 1) / tile;
-  const std::int64_t total = static_cast<std::int64_t>(w) * h;
+  std::int64_t total = 0;
+  for (int t = first; t < first + count; ++t) total += grid.rect(t).pixels();
 
   std::atomic<std::int64_t> pixels_done{0};
   std::atomic<std::uint64_t> rays{0};
@@ -51,12 +56,13 @@ Canvas render_image(const Camera& camera, const World& world, const RenderOption
   auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };
 
   auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed); };
-  auto render_tile = [&](int t) {
-    const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
-    const int x1 = std::min(w, x0 + tile), y1 = std::min(h, y0 + tile);
+  auto render_tile = [&](int t, std::vector<Color>& pixels) {
+    const PixelRect r = grid.rect(t);
+    pixels.resize(static_cast<std::size_t>(r.pixels()));
     const std::uint64_t before = rays_traced_on_this_thread();
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x) {
+    Color* out = pixels.data();
+    for (int y = r.y0; y < r.y1; ++y)
+      for (int x = r.x0; x < r.x1; ++x) {
         if (cancelled()) return;  // per pixel: a tile of many samples can take seconds
         Color sum = kBlack;
         for (int s = 0; s < samples; ++s) {
@@ -64,11 +70,11 @@ Canvas render_image(const Camera& camera, const World& world, const RenderOption
           sample_offset(x, y, s, samples, dx, dy);
           sum += color_at(world, camera.ray_for_pixel(x, y, dx, dy), options.max_depth);
         }
-        canvas.write_pixel(x, y, samples == 1 ? sum : sum / static_cast<double>(samples));
+        *out++ = samples == 1 ? sum : sum / static_cast<double>(samples);
       }
+    sink(t, r, pixels.data());
     rays.fetch_add(rays_traced_on_this_thread() - before, std::memory_order_relaxed);
-    const std::int64_t done = pixels_done.fetch_add(static_cast<std::int64_t>(x1 - x0) * (y1 - y0)) +
-                              static_cast<std::int64_t>(x1 - x0) * (y1 - y0);
+    const std::int64_t done = pixels_done.fetch_add(r.pixels()) + r.pixels();
     if (options.progress && done < total) {
       std::unique_lock lock(progress_mutex, std::try_to_lock);
       if (lock.owns_lock()) {
@@ -85,15 +91,27 @@ Canvas render_image(const Camera& camera, const World& world, const RenderOption
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
     tbb::task_arena arena(threads);
     arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const tbb::blocked_range<int>& r) {
-        for (int t = r.begin(); t != r.end(); ++t) render_tile(t);
+      tbb::parallel_for(tbb::blocked_range<int>(first, first + count, 1), [&](const tbb::blocked_range<int>& range) {
+        std::vector<Color> pixels;
+        for (int t = range.begin(); t != range.end(); ++t) render_tile(t, pixels);
       });
     });
   }
   const double seconds = elapsed();
   const bool stopped = cancelled();
   if (options.progress && !stopped) options.progress(RenderProgress{total, total, seconds, rays.load()});
-  if (stats) *stats = RenderStats{seconds, rays.load(), threads, stopped};
+  return RenderStats{seconds, rays.load(), threads, stopped};
+}
+
+Canvas render_image(const Camera& camera, const World& world, const RenderOptions& options, RenderStats* stats) {
+  Canvas canvas(camera.hsize(), camera.vsize());
+  const TileGrid grid{camera.hsize(), camera.vsize(), std::max(1, options.tile_size)};
+  const RenderStats s =
+      render_tiles(camera, world, options, 0, grid.count(), [&](int, const PixelRect& r, const Color* pixels) {
+        for (int y = r.y0; y < r.y1; ++y)
+          for (int x = r.x0; x < r.x1; ++x) canvas.write_pixel(x, y, *pixels++);
+      });
+  if (stats) *stats = s;
   return canvas;
 }
 

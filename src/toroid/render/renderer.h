@@ -51,6 +51,37 @@ struct RenderStats {
 Canvas render_image(const Camera& camera, const World& world, const RenderOptions& options,
                     RenderStats* stats = nullptr);
 
+// The pixels x0 <= x < x1, y0 <= y < y1.
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+  std::int64_t pixels() const { return static_cast<std::int64_t>(width()) * height(); }
+};
+
+// An image cut into tiles: squares of `size` pixels in rows from the top
+// left, numbered row by row (the last column and row may be narrower).
+struct TileGrid {
+  int width = 0, height = 0, size = 16;
+  int columns() const { return (width + size - 1) / size; }
+  int rows() const { return (height + size - 1) / size; }
+  int count() const { return columns() * rows(); }
+  PixelRect rect(int tile) const;
+};
+
+// Receives a finished tile: its pixels row by row, top row first. Called
+// from worker threads, concurrently for different tiles.
+using TileSink = std::function<void(int tile, const PixelRect& rect, const Color* pixels)>;
+
+// Renders tiles first .. first + count - 1 of the camera's image (a TileGrid
+// of options.tile_size) in parallel, handing each to `sink`. A pixel comes
+// out the same whichever call renders it, so that the image may be rendered
+// in pieces (render_image is one call over every tile). The progress
+// callback counts this call's pixels; a cancelled call skips the tiles not
+// yet begun and does not hand out the tile it stopped in.
+RenderStats render_tiles(const Camera& camera, const World& world, const RenderOptions& options, int first, int count,
+                         const TileSink& sink);
+
 // The sub-pixel offset (dx, dy in [0, 1)) of sample `s` of `n` for pixel (x, y).
 void sample_offset(int x, int y, int s, int n, double& dx, double& dy);
 

@@ -129,6 +129,48 @@ TEST(Renderer, CancellingMidwaySkipsTheRemainingTiles) {
   EXPECT_EQ(last_done, 16);  // one 4x4 tile, and no final report
 }
 
+TEST(TileGrid, CoversTheImageRowByRowWithNarrowerLastTiles) {
+  const TileGrid g{37, 23, 16};
+  EXPECT_EQ(g.columns(), 3);
+  EXPECT_EQ(g.rows(), 2);
+  EXPECT_EQ(g.count(), 6);
+  const PixelRect first = g.rect(0), third = g.rect(2), last = g.rect(5);
+  EXPECT_EQ(first.x0, 0);
+  EXPECT_EQ(first.x1, 16);
+  EXPECT_EQ(third.x0, 32);
+  EXPECT_EQ(third.x1, 37);  // 5 wide
+  EXPECT_EQ(last.y0, 16);
+  EXPECT_EQ(last.y1, 23);  // 7 high
+  EXPECT_EQ(last.pixels(), 5 * 7);
+}
+
+// The image rendered in pieces, out of order and with other thread counts,
+// is the image rendered in one call, bit for bit.
+TEST(Renderer, TilesRenderedInPiecesMakeTheSameImage) {
+  RenderOptions o;
+  o.samples = 4;
+  o.threads = 2;
+  o.tile_size = 8;
+  const Camera camera = test_camera();
+  const World world = torus_world();
+  const Canvas whole = render_image(camera, world, o);
+  Canvas pieces(camera.hsize(), camera.vsize());
+  auto sink = [&](int, const PixelRect& r, const Color* pixels) {
+    for (int y = r.y0; y < r.y1; ++y)
+      for (int x = r.x0; x < r.x1; ++x) pieces.write_pixel(x, y, *pixels++);
+  };
+  const int count = TileGrid{camera.hsize(), camera.vsize(), 8}.count();  // 5 x 3
+  o.threads = 1;
+  std::int64_t pixels = 0;
+  o.progress = [&](const RenderProgress& p) { pixels = p.pixels_total; };
+  render_tiles(camera, world, o, 9, count - 9, sink);
+  EXPECT_EQ(pixels, 5 * 8 + 7 * 37);  // tile 9 (the second row's last, 5 wide) and the last row (7 high)
+  render_tiles(camera, world, o, 0, 4, sink);
+  o.threads = 3;
+  render_tiles(camera, world, o, 4, 5, sink);
+  EXPECT_TRUE(same_bytes(whole, pieces));
+}
+
 TEST(Renderer, AnUncancelledRenderIsComplete) {
   std::atomic<bool> cancel{false};
   RenderOptions o;
