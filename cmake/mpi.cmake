@@ -10,7 +10,8 @@ if(toroid_mpi_mode STREQUAL "OFF")
 endif()
 # An instrumented toroid would report the MPI library's own allocations and
 # threads, which are not instrumented.
-if(TOROID_SANITIZE OR TOROID_FUZZ OR TOROID_SANITIZE_THREAD)
+toroid_sanitized_build(toroid_sanitized)
+if(toroid_sanitized)
   toroid_feature_unavailable(${toroid_mpi_mode}
     "TOROID_MPI=ON cannot be combined with a sanitized build (the MPI library is not instrumented)"
     "toroid: MPI rendering is skipped in a sanitized build")

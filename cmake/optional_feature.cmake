@@ -38,3 +38,14 @@ function(toroid_feature_unavailable mode error status)
   endif()
   message(STATUS "${status}")
 endfunction()
+
+# Sets <out> to TRUE in a sanitized build (TOROID_SANITIZE, TOROID_FUZZ or
+# TOROID_SANITIZE_THREAD), which the parts built on uninstrumented libraries
+# (Python, MPI) leave out.
+function(toroid_sanitized_build out)
+  if(TOROID_SANITIZE OR TOROID_FUZZ OR TOROID_SANITIZE_THREAD)
+    set(${out} TRUE PARENT_SCOPE)
+  else()
+    set(${out} FALSE PARENT_SCOPE)
+  endif()
+endfunction()

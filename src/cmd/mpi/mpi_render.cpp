@@ -109,16 +109,12 @@ class TileQueue {
   int tiles_, ranks_, next_ = 0;
 };
 
-int rank_threads(const RenderJob& job) {
-  return job.options.threads > 0 ? job.options.threads : static_cast<int>(std::thread::hardware_concurrency());
-}
-
 // Ranks 1..: ask for a run, render it, send its pixels back, until rank 0
 // says there is no more. The request for the next run goes out before this
 // one is rendered, so that no rank waits for its next run.
 int serve_as_worker(RenderJob& job) {
   const TileGrid grid{job.camera.hsize(), job.camera.vsize(), job.options.tile_size};
-  const int threads = rank_threads(job);
+  const int threads = render_threads(job.options);
   MPI_Send(&threads, 1, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
   std::vector<double> message;
   std::vector<std::int64_t> offsets;
@@ -172,7 +168,7 @@ GatherResult serve_as_root(RenderJob& job, Canvas& canvas, bool show_bar) {
       for (int x = r.x0; x < r.x1; ++x) canvas.write_pixel(x, y, *pixels++);
   };
   std::thread local([&] {
-    const int threads = rank_threads(job);
+    const int threads = render_threads(job.options);
     for (;;) {
       const auto [first, count] = queue.take(threads);
       if (count == 0 || interrupted()) break;
@@ -230,15 +226,10 @@ GatherResult serve_as_root(RenderJob& job, Canvas& canvas, bool show_bar) {
       remote_rays += static_cast<std::uint64_t>(message[2]);
       result.tiles[static_cast<std::size_t>(status.MPI_SOURCE)] += count;
       const double* in = message.data() + 3;
-      std::vector<Color> pixels;
       for (int t = first; t < first + count; ++t) {
         const PixelRect r = grid.rect(t);
-        pixels.resize(static_cast<std::size_t>(r.pixels()));
-        for (Color& c : pixels) {
-          c = Color{in[0], in[1], in[2]};
-          in += 3;
-        }
-        write(r, pixels.data());
+        for (int y = r.y0; y < r.y1; ++y)
+          for (int x = r.x0; x < r.x1; ++x, in += 3) canvas.write_pixel(x, y, Color{in[0], in[1], in[2]});
         remote_pixels += r.pixels();
       }
     }
@@ -280,7 +271,7 @@ int run_render_mpi(const RenderCommandOptions& opt) {
                              "file, given the same options)");
       code != 0)
     return finish(code);
-  int threads = rank_threads(job), all_threads = 0;
+  int threads = render_threads(job.options), all_threads = 0;
   MPI_Reduce(&threads, &all_threads, 1, MPI_INT, MPI_SUM, 0, MPI_COMM_WORLD);
 
   if (rank != 0) {

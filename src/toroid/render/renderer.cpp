@@ -34,6 +34,10 @@ void sample_offset(int x, int y, int s, int n, double& dx, double& dy) {
   dy = ((s / cols) + unit_interval(h2)) / rows;
 }
 
+int render_threads(const RenderOptions& options) {
+  return options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+}
+
 PixelRect TileGrid::rect(int tile) const {
   const int x0 = (tile % columns()) * size, y0 = (tile / columns()) * size;
   return {x0, y0, std::min(width, x0 + size), std::min(height, y0 + size)};
@@ -44,7 +48,7 @@ RenderStats render_tiles(const Camera& camera, const World& world, const RenderO
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   const TileGrid grid{camera.hsize(), camera.vsize(), std::max(1, options.tile_size)};
-  const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  const int threads = render_threads(options);
   const int samples = std::max(1, options.samples);
   std::int64_t total = 0;
   for (int t = first; t < first + count; ++t) total += grid.rect(t).pixels();

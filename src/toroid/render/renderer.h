@@ -47,6 +47,10 @@ struct RenderStats {
   bool cancelled = false;  // stopped by RenderOptions::cancel: the image is incomplete
 };
 
+// The worker threads a render with these options uses: options.threads, or
+// every core when it is 0.
+int render_threads(const RenderOptions& options);
+
 // Renders the image; fills `stats` when given. Precondition: options valid.
 Canvas render_image(const Camera& camera, const World& world, const RenderOptions& options,
                     RenderStats* stats = nullptr);
