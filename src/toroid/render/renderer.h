@@ -20,7 +20,13 @@ struct RenderProgress {
   std::uint64_t rays = 0;  // rays traced so far (see rays_traced_on_this_thread)
 };
 
+// How a camera ray's colour is computed: `whitted`, the book's recursive
+// Phong shading (color_at); `path`, the unbiased path tracer
+// (render/path_tracer.h).
+enum class Integrator { whitted, path };
+
 struct RenderOptions {
+  Integrator integrator = Integrator::whitted;
   // Samples per pixel (>= 1). 1: one ray through the pixel centre (the book).
   // N > 1: a ceil(sqrt N)-column stratified grid, each sample jittered within
   // its cell by a hash of (pixel, sample), so the image does not depend on the
@@ -28,7 +34,8 @@ struct RenderOptions {
   int samples = 1;
   // Worker threads (>= 1); 0: every core.
   int threads = 0;
-  // Bounces for reflection and refraction.
+  // Bounces for reflection and refraction (whitted); path vertices after the
+  // camera's (path).
   int max_depth = kDefaultRemaining;
   int tile_size = 16;
   // Called now and then (at most every progress_interval_s, from a worker

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "toroid/render/camera.h"
+#include "toroid/render/renderer.h"
 #include "toroid/render/world.h"
 #include "toroid/torus/solver.h"
 
@@ -24,6 +25,9 @@ struct SceneError : std::runtime_error {
 struct Scene {
   World world;
   Camera camera;
+  // The scene's `- add: integrator` choice, when it makes one (the command
+  // line's --integrator overrides it).
+  std::optional<Integrator> integrator;
 };
 
 struct SceneLoadOptions {
