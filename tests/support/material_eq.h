@@ -23,6 +23,7 @@ inline ::testing::AssertionResult MaterialsEqual(const char* a_expr, const char*
   if (!approx_equal(a.reflective, b.reflective)) return fail("reflective");
   if (!approx_equal(a.transparency, b.transparency)) return fail("transparency");
   if (!approx_equal(a.refractive_index, b.refractive_index)) return fail("refractive_index");
+  if (!approx_equal(a.emissive, b.emissive)) return fail("emissive");
   if (a.pattern != b.pattern) return fail("pattern");
   return ::testing::AssertionSuccess();
 }

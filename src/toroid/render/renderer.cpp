@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "toroid/math/hash.h"
+#include "toroid/render/path_tracer.h"
 
 namespace toroid {
 
@@ -50,6 +51,7 @@ RenderStats render_tiles(const Camera& camera, const World& world, const RenderO
   const TileGrid grid{camera.hsize(), camera.vsize(), std::max(1, options.tile_size)};
   const int threads = render_threads(options);
   const int samples = std::max(1, options.samples);
+  const bool path = options.integrator == Integrator::path;
   std::int64_t total = 0;
   for (int t = first; t < first + count; ++t) total += grid.rect(t).pixels();
 
@@ -72,7 +74,9 @@ RenderStats render_tiles(const Camera& camera, const World& world, const RenderO
         for (int s = 0; s < samples; ++s) {
           double dx, dy;
           sample_offset(x, y, s, samples, dx, dy);
-          sum += color_at(world, camera.ray_for_pixel(x, y, dx, dy), options.max_depth);
+          const Ray ray = camera.ray_for_pixel(x, y, dx, dy);
+          sum += path ? trace_path(world, ray, options.max_depth, path_seed(x, y, s))
+                      : color_at(world, ray, options.max_depth);
         }
         *out++ = samples == 1 ? sum : sum / static_cast<double>(samples);
       }

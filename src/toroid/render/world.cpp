@@ -144,6 +144,8 @@ Color shade_hit(const World& world, const Computations& comps, int remaining) {
         light.in_front_of(comps.over_point, comps.normalv) ? intensity_at(light, comps.over_point, world) : 0.0;
     surface += lighting(m, *comps.object, light, comps.over_point, comps.eyev, comps.normalv, visible);
   }
+  // Emission: an exact no-op for the default black (x + 0 == x), skipped.
+  if (m.emissive.r != 0 || m.emissive.g != 0 || m.emissive.b != 0) surface += m.emissive;
   const Color reflected = reflected_color(world, comps, remaining);
   const Color refracted = refracted_color(world, comps, remaining);
   if (m.reflective > 0 && m.transparency > 0) {
@@ -160,7 +162,7 @@ Color color_at(const World& world, const Ray& ray, int remaining) {
     // (Asking for the nearest hit first and for the list only when it
     // refracts costs more than it saves on scenes with much glass.)
     Intersection nearest;
-    if (!intersect_nearest(world, ray, nearest)) return kBlack;
+    if (!intersect_nearest(world, ray, nearest)) return world.environment.radiance(ray.direction);
     return shade_hit(world, prepare_computations(nearest, ray), remaining);
   }
   // Refraction needs n1 and n2, from every intersection along the ray up
@@ -176,7 +178,7 @@ Color color_at(const World& world, const Ray& ray, int remaining) {
     intersect_world(world, ray, xs);
     h = hit(xs);
   }
-  if (h == nullptr) return kBlack;
+  if (h == nullptr) return world.environment.radiance(ray.direction);
   // Only a refracting hit reads n1 and n2 (refracted_color, schlick): the
   // list is cut at the hit, sorted, and the containers walked, for those
   // alone.

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "toroid/core/intersection.h"
@@ -18,11 +19,31 @@ namespace toroid {
 
 class Shape;
 
+// The radiance that arrives along a ray that hits nothing: `color` from
+// every direction, or, with `zenith`, a vertical gradient: `color` at and
+// below the horizon, blending linearly in the direction's y (unit) to
+// `zenith` straight up.
+struct Environment {
+  Color color{0, 0, 0};
+  std::optional<Color> zenith;
+
+  // The radiance arriving from the direction opposite to `direction` (a
+  // ray's direction, any length but not zero).
+  Color radiance(const Tuple& direction) const {
+    if (!zenith) return color;
+    const double y = direction.y / magnitude(direction);
+    if (!(y > 0)) return color;
+    return color * (1 - y) + *zenith * y;
+  }
+};
+
 struct World {
   std::vector<std::shared_ptr<Shape>> objects;
   // Every light's contribution adds up.
   std::vector<PointLight> lights;
   std::vector<AreaLight> area_lights;
+  // What rays that hit nothing see (black by default, as in the book).
+  Environment environment;
   // Optional, built by index_objects: the renderer's queries use it while
   // it covers as many objects as `objects` holds, else test every object.
   ShapeBvh index;
@@ -60,8 +81,8 @@ bool is_shadowed(const World& world, const Tuple& light_position, const Tuple& p
 double intensity_at(const PointLight& light, const Tuple& point, const World& world);
 double intensity_at(const AreaLight& light, const Tuple& point, const World& world);
 
-// Surface colour (every light) plus reflected and refracted colour, with
-// `remaining` bounces left.
+// Surface colour (every light, and the material's emissive colour) plus
+// reflected and refracted colour, with `remaining` bounces left.
 Color shade_hit(const World& world, const Computations& comps, int remaining = kDefaultRemaining);
 
 // Rays traced so far on the calling thread: every color_at call (camera,
@@ -69,7 +90,7 @@ Color shade_hit(const World& world, const Computations& comps, int remaining = k
 // adds one. Renderers take differences around a unit of work.
 std::uint64_t& rays_traced_on_this_thread();
 
-// The colour seen along `ray`: black if it hits nothing.
+// The colour seen along `ray`: the environment's if it hits nothing.
 Color color_at(const World& world, const Ray& ray, int remaining = kDefaultRemaining);
 
 // Colour arriving along the reflection of the eye ray; black when the

@@ -32,7 +32,7 @@ struct MaterialOrder {
   using is_transparent = void;
   static auto key(const Material& m) {
     return std::tie(m.color.r, m.color.g, m.color.b, m.ambient, m.diffuse, m.specular, m.shininess, m.reflective,
-                    m.transparency, m.refractive_index, m.pattern);
+                    m.transparency, m.refractive_index, m.emissive.r, m.emissive.g, m.emissive.b, m.pattern);
   }
   static const Material& value(const Material& m) { return m; }
   static const Material& value(const SharedMaterial& m) { return *m; }

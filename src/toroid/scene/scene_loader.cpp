@@ -33,7 +33,10 @@ namespace {
 constexpr std::size_t kGroupBvhThreshold = 8;
 
 // The scene items that are not shapes, by their `add:`.
-constexpr NamedBuilder<ItemBuild> kItems[] = {{"camera", build_camera}, {"light", build_light}};
+constexpr NamedBuilder<ItemBuild> kItems[] = {{"camera", build_camera},
+                                              {"light", build_light},
+                                              {"environment", build_environment},
+                                              {"integrator", build_integrator}};
 
 // `- define: NAME`, with `value` and `extend`.
 void read_define(LoadState& state, ItemParams& item) {
@@ -86,7 +89,7 @@ Scene build(LoadState& state, const std::function<std::optional<YAML::Node>()>& 
   // The list grew by doubling; it holds 16 bytes per shape from here on.
   parts.world.objects.shrink_to_fit();
   index_objects(parts.world);
-  return Scene{std::move(parts.world), camera};
+  return Scene{std::move(parts.world), camera, parts.integrator};
 }
 
 // The whole document's node tree.

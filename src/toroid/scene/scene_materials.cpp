@@ -25,6 +25,12 @@ constexpr MaterialKey kMaterialKeys[] = {
     {"transparency", [](LoadState&, const Param& p, Material& m, bool&) { m.transparency = p.number(); }},
     {"refractive-index",
      [](LoadState&, const Param& p, Material& m, bool&) { m.refractive_index = p.positive("refractive-index"); }},
+    {"emissive",
+     [](LoadState& s, const Param& p, Material& m, bool&) {
+       m.emissive = p.color("emissive");
+       if (m.emissive.r < 0 || m.emissive.g < 0 || m.emissive.b < 0)
+         s.reader.fail(p.value(), "emissive must not be negative");
+     }},
     {"pattern", [](LoadState& s, const Param& p, Material& m, bool&) { m.pattern = read_pattern(s, p.value()); }},
     {"shadow", [](LoadState&, const Param& p, Material&, bool& casts_shadow) { casts_shadow = p.boolean(); }},
 };
