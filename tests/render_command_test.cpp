@@ -9,14 +9,22 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "support/command.h"
+#include "support/image_files.h"
+#include "toroid/io/exr_image.h"
+#include "toroid/io/srgb.h"
+#include "toroid/render/renderer.h"
+#include "toroid/scene/scene_loader.h"
 
 namespace {
 
@@ -85,6 +93,204 @@ TEST_F(RenderCommand, WarningsCarryThePrefixAndTheRenderGoesOn) {
                      ":10:18: warning: rotate-x angle 90 is more than 2 pi radians (a full turn); if it is in "
                      "degrees, write 1.5708 (angles are in radians)\n");
   EXPECT_TRUE(fs::exists(out));
+}
+
+// A small scene that renders in an instant, with a light bright enough that
+// some values pass 1 (an EXR keeps them, an 8-bit file clamps them).
+const char kTinyScene[] = R"(- add: camera
+  width: 12
+  height: 9
+  field-of-view: 1.0
+  from: [0, 1.5, -5]
+  to: [0, 1, 0]
+  up: [0, 1, 0]
+- add: light
+  at: [-10, 10, -10]
+  intensity: [2.5, 2.5, 2.5]
+- add: plane
+  material:
+    color: [0.2, 0.3, 0.9]
+- add: sphere
+  transform:
+    - [translate, 0, 1, 0]
+  material:
+    color: [1, 0.4, 0.1]
+    specular: 0.9
+)";
+
+// The image of kTinyScene rendered in this process: what the command's
+// files must hold.
+toroid::Canvas tiny_in_process(const fs::path& scene) {
+  const toroid::Scene s = toroid::load_scene(scene.string());
+  toroid::RenderOptions ro;
+  ro.threads = 1;
+  return toroid::render_image(s.camera, s.world, ro);
+}
+
+// 8-bit codes as the PPM writes them: clamped, times 255, rounded.
+unsigned char ppm_code(double v) { return static_cast<unsigned char>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
+
+std::vector<unsigned char> codes(const toroid::Canvas& c, double scale = 1) {
+  std::vector<unsigned char> v;
+  for (int y = 0; y < c.height(); ++y)
+    for (int x = 0; x < c.width(); ++x) {
+      const toroid::Color p = c.pixel_at(x, y);
+      for (const double ch : {p.r, p.g, p.b}) v.push_back(ppm_code(ch * scale));
+    }
+  return v;
+}
+
+std::vector<unsigned char> ppm_values(const fs::path& file) {
+  return toroid::testing::ppm_samples(toroid::testing::read_text(file));
+}
+
+std::vector<unsigned char> png_codes(const fs::path& file) { return toroid::testing::png_samples(file); }
+
+class RenderCommandOutput : public RenderCommand {
+ protected:
+  void SetUp() override {
+    RenderCommand::SetUp();
+    scene_ = dir_ / "tiny.yml";
+    std::ofstream(scene_) << kTinyScene;
+  }
+  // Renders the tiny scene to `name` in the test's folder with `args`.
+  fs::path render(const std::string& name, const std::string& args = "") {
+    const fs::path out = dir_ / name;
+    std::string err;
+    EXPECT_EQ(run("render " + scene_.string() + " -o " + out.string() + " --threads 2 --quiet " + args, &err), 0)
+        << err;
+    return out;
+  }
+  fs::path scene_;
+};
+
+TEST_F(RenderCommandOutput, ExrHoldsTheLinearFloatValuesUnclamped) {
+  const toroid::Canvas exr = toroid::read_exr(render("x.exr").string());
+  const toroid::Canvas expected = tiny_in_process(scene_);
+  ASSERT_EQ(exr.width(), 12);
+  ASSERT_EQ(exr.height(), 9);
+  double brightest = 0;
+  for (int y = 0; y < exr.height(); ++y)
+    for (int x = 0; x < exr.width(); ++x) {
+      const toroid::Color e = exr.pixel_at(x, y), c = expected.pixel_at(x, y);
+      ASSERT_EQ(e.r, static_cast<float>(c.r)) << x << ", " << y;
+      ASSERT_EQ(e.g, static_cast<float>(c.g)) << x << ", " << y;
+      ASSERT_EQ(e.b, static_cast<float>(c.b)) << x << ", " << y;
+      brightest = std::max({brightest, e.r, e.g, e.b});
+    }
+  EXPECT_GT(brightest, 1.0) << "no value above 1: the scene does not show that the EXR is unclamped";
+  // The PPM of the same render holds the same values, in 8 bits.
+  EXPECT_EQ(ppm_values(render("x.ppm")), codes(exr));
+}
+
+TEST_F(RenderCommandOutput, ExposureOneDoublesEveryValueInEveryFormat) {
+  const toroid::Canvas plain = toroid::read_exr(render("plain.exr").string());
+  const toroid::Canvas doubled = toroid::read_exr(render("doubled.exr", "--exposure 1").string());
+  ASSERT_EQ(doubled.width(), plain.width());
+  for (int y = 0; y < plain.height(); ++y)
+    for (int x = 0; x < plain.width(); ++x) {
+      const toroid::Color p = plain.pixel_at(x, y), d = doubled.pixel_at(x, y);
+      ASSERT_EQ(d.r, 2 * p.r) << x << ", " << y;
+      ASSERT_EQ(d.g, 2 * p.g) << x << ", " << y;
+      ASSERT_EQ(d.b, 2 * p.b) << x << ", " << y;
+    }
+  EXPECT_EQ(ppm_values(render("doubled.ppm", "--exposure 1")), codes(plain, 2));
+  EXPECT_EQ(png_codes(render("doubled.png", "--exposure 1 --linear")), codes(plain, 2));
+  EXPECT_EQ(ppm_values(render("quarter.ppm", "--exposure=-2")), codes(plain, 0.25));
+  // The sRGB PNG is scaled before its transfer curve.
+  const toroid::Canvas c = tiny_in_process(scene_);
+  std::vector<unsigned char> srgb;
+  for (int y = 0; y < c.height(); ++y)
+    for (int x = 0; x < c.width(); ++x) {
+      const toroid::Color p = c.pixel_at(x, y) * 2;
+      for (const double ch : {p.r, p.g, p.b}) srgb.push_back(toroid::linear_to_srgb8(ch));
+    }
+  EXPECT_EQ(png_codes(render("doubled-srgb.png", "--exposure 1")), srgb);
+}
+
+TEST_F(RenderCommandOutput, ALinearPngHoldsThePpmsValues) {
+  const std::vector<unsigned char> ppm = ppm_values(render("x.ppm"));
+  ASSERT_EQ(ppm.size(), 12u * 9u * 3u);
+  EXPECT_EQ(png_codes(render("linear.png", "--linear")), ppm);
+  // Without --linear the PNG is sRGB-encoded: other numbers.
+  EXPECT_NE(png_codes(render("srgb.png")), ppm);
+}
+
+// Bad values: exit 2, a message naming the option, and no file.
+TEST_F(RenderCommandOutput, BadValuesExit2WithTheirMessageAndNoFile) {
+  struct Case {
+    std::string output, args, message;
+  };
+  const std::vector<Case> cases{
+      {"x.png", "--exposure nan", "toroid render: --exposure: must be a number of stops from -32 to 32, got 'nan'"},
+      {"x.png", "--exposure inf", "--exposure: must be a number of stops from -32 to 32, got 'inf'"},
+      {"x.png", "--exposure 33", "--exposure: must be a number of stops from -32 to 32, got '33'"},
+      {"x.exr", "--exposure=-32.5", "--exposure: must be a number of stops from -32 to 32, got '-32.5'"},
+      {"x.png", "--exposure 1e400", "--exposure: must be a number of stops from -32 to 32, got '1e400'"},
+      {"x.png", "--exposure bright", "--exposure: must be a number of stops from -32 to 32, got 'bright'"},
+      {"x.png", "--exposure 1x", "--exposure: must be a number of stops from -32 to 32, got '1x'"},
+      {"x.ppm", "--linear",
+       "toroid render: --linear is for .png output only: '" + (dir_ / "x.ppm").string() +
+           "' holds linear values already (drop --linear)"},
+      {"x.EXR", "--linear", "toroid render: --linear is for .png output only"},
+      {"x.png", "--integrator photon", "toroid render: --integrator: photon not in {whitted,path}"},
+      {"x.png", "--integrator", "--integrator: 1 required TEXT:{whitted,path} missing"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    std::string err;
+    EXPECT_EQ(run("render " + scene_.string() + " -o " + (dir_ / c.output).string() + " " + c.args, &err), 2);
+    EXPECT_NE(err.find(c.message), std::string::npos) << err;
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1) << "a file was written";
+  }
+}
+
+// An image named without -o gets the suggestion for .exr as for .png.
+TEST_F(RenderCommandOutput, AnExrNamedWithoutDashOIsSuggested) {
+  std::string err;
+  EXPECT_EQ(run("render " + scene_.string() + " out.exr", &err), 2);
+  EXPECT_NE(err.find("toroid render: unexpected argument 'out.exr' (did you mean '-o out.exr'?)"), std::string::npos)
+      << err;
+}
+
+// Exposures at the ends of the range, and 0, are accepted.
+TEST_F(RenderCommandOutput, TheExposureRangeIsInclusive) {
+  for (const char* e : {"-32", "32", "0", "0.5"}) {
+    SCOPED_TRACE(e);
+    EXPECT_TRUE(fs::exists(render(std::string("e") + e + ".exr", std::string("--exposure=") + e)));
+  }
+}
+
+TEST_F(RenderCommandOutput, TheIntegratorIsChosenAndNamedInTheSummary) {
+  for (const std::string integrator : {"whitted", "path"}) {
+    SCOPED_TRACE(integrator);
+    const fs::path out = dir_ / (integrator + ".png");
+    std::string err;
+    ASSERT_EQ(
+        run("render " + scene_.string() + " -o " + out.string() + " --threads 2 --integrator " + integrator, &err), 0)
+        << err;
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_EQ(err.find("12x9, 1 samples, path integrator, 2 threads, ") != std::string::npos, integrator == "path")
+        << err;
+    EXPECT_EQ(err.find("12x9, 1 samples, 2 threads, ") != std::string::npos, integrator == "whitted") << err;
+  }
+}
+
+// The scene's `- add: integrator` is the default; --integrator overrides it.
+TEST_F(RenderCommandOutput, TheScenesIntegratorUnlessTheCommandLineSaysOtherwise) {
+  const fs::path scene = dir_ / "path.yml";
+  std::ofstream(scene) << kTinyScene << "- add: integrator\n  type: path\n";
+  struct Case {
+    std::string args;
+    bool path;
+  };
+  for (const Case& c : {Case{"", true}, Case{"--integrator whitted", false}, Case{"--integrator path", true}}) {
+    SCOPED_TRACE(c.args);
+    std::string err;
+    ASSERT_EQ(run("render " + scene.string() + " -o " + (dir_ / "x.png").string() + " --threads 2 " + c.args, &err), 0)
+        << err;
+    EXPECT_EQ(err.find(", path integrator, ") != std::string::npos, c.path) << err;
+  }
 }
 
 // Starts `toroid ARGS...` (stderr to `err`) and returns its process id.

@@ -9,7 +9,7 @@
 set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config ccache
   libgtest-dev libgmock-dev libbenchmark-dev libyaml-cpp-dev libpng-dev libcli11-dev
-  libtbb-dev libtinyobjloader-dev libmpfr-dev libgmp-dev)
+  libtbb-dev libtinyobjloader-dev libopenexr-dev libmpfr-dev libgmp-dev)
 for arg in "$@"; do
   if [ "$arg" = --tests ]; then
     packages+=(python3-dev python3-numpy python3-pybind11 pybind11-dev libembree-dev libopenmpi-dev openmpi-bin clang)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "toroid/io/image_writer.h"     // image_format_of
 #include "toroid/scene/scene_loader.h"  // edit_distance, shared with the scene's "did you mean"
 
 namespace toroid::cmd {
@@ -66,9 +67,8 @@ std::string unknown_subcommand(const CLI::App& app, const std::string& arg) {
 
 std::string unexpected_argument(const CLI::App& app, const std::string& arg) {
   // `toroid render scene.yaml out.png`: the image named without -o.
-  const std::string ext = std::filesystem::path(arg).extension().string();
   const CLI::Option* output = app.get_option_no_throw("--output");
-  if ((ext == ".png" || ext == ".ppm") && output != nullptr && output->count() == 0)
+  if (image_format_of(arg) && output != nullptr && output->count() == 0)
     return "unexpected argument '" + arg + "'" + mean("-o " + arg);
   return "unexpected argument '" + arg + "'";
 }

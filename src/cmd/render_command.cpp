@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// `toroid render`: a YAML scene to a PNG or PPM image.
+// `toroid render`: a YAML scene to a PNG, PPM or OpenEXR image.
 #include "cmd/render_command.h"
 
 #include <unistd.h>
@@ -82,10 +82,29 @@ int interrupted_exit(bool say) {
   return 128 + g_signal;
 }
 
+const char* integrator_option_name(Integrator integrator) {
+  return integrator == Integrator::path ? "path" : "whitted";
+}
+
+std::optional<Integrator> integrator_from_option(const std::string& name) {
+  if (name == "whitted") return Integrator::whitted;
+  if (name == "path") return Integrator::path;
+  return std::nullopt;
+}
+
 PreparedRender prepare_render(const RenderCommandOptions& opt, bool check_output,
                               const std::function<void(const std::string&)>& on_warning) {
   PreparedRender out;
   // Everything that can be checked is checked before the render starts.
+  // --linear changes only how a PNG encodes; PPM and EXR files are linear
+  // already, and a flag that would change nothing is refused rather than
+  // left to look as if it did something. (An unknown extension is
+  // check_image_path's to report.)
+  if (const std::optional<ImageFormat> format = image_format_of(opt.output);
+      opt.linear && format && *format != ImageFormat::png) {
+    out.error = "--linear is for .png output only: '" + opt.output + "' holds linear values already (drop --linear)";
+    return out;
+  }
   if (check_output) {
     try {
       check_image_path(opt.output);
@@ -115,6 +134,7 @@ PreparedRender prepare_render(const RenderCommandOptions& opt, bool check_output
     camera.set_transform(scene->camera.transform());
   }
   RenderOptions ro;
+  ro.integrator = integrator_from_option(opt.integrator).value_or(scene->integrator.value_or(Integrator::whitted));
   ro.samples = opt.samples;
   ro.threads = opt.threads.value_or(0);
   ro.max_depth = opt.max_depth;
@@ -127,7 +147,11 @@ PreparedRender prepare_render(const RenderCommandOptions& opt, bool check_output
 
 int write_output(const Canvas& canvas, const RenderCommandOptions& opt) {
   try {
-    if (!write_image(canvas, opt.output, &g_interrupted)) return interrupted_exit();
+    ImageWriteOptions wo;
+    wo.scale = std::exp2(opt.exposure);
+    wo.linear_png = opt.linear;
+    wo.cancel = &g_interrupted;
+    if (!write_image(canvas, opt.output, wo)) return interrupted_exit();
   } catch (const std::exception& e) {
     std::cerr << "toroid render: " << e.what() << "\n";
     return 1;
@@ -135,10 +159,11 @@ int write_output(const Canvas& canvas, const RenderCommandOptions& opt) {
   return 0;
 }
 
-void print_summary(const Canvas& canvas, int samples, const std::string& workers, double seconds, std::uint64_t rays) {
-  std::fprintf(stderr, "%dx%d, %d samples, %s, %.2f s, %llu rays, %.2f Mrays/s\n", canvas.width(), canvas.height(),
-               samples, workers.c_str(), seconds, static_cast<unsigned long long>(rays),
-               seconds > 0 ? static_cast<double>(rays) / seconds / 1e6 : 0.0);
+void print_summary(const Canvas& canvas, int samples, Integrator integrator, const std::string& workers, double seconds,
+                   std::uint64_t rays) {
+  std::fprintf(stderr, "%dx%d, %d samples, %s%s, %.2f s, %llu rays, %.2f Mrays/s\n", canvas.width(), canvas.height(),
+               samples, integrator == Integrator::path ? "path integrator, " : "", workers.c_str(), seconds,
+               static_cast<unsigned long long>(rays), seconds > 0 ? static_cast<double>(rays) / seconds / 1e6 : 0.0);
 }
 
 namespace {
@@ -173,7 +198,8 @@ int run_render(const RenderCommandOptions& opt) {
   if (stats.cancelled || g_interrupted) return interrupted_exit();
   if (const int code = write_output(canvas, opt); code != 0) return code;
   if (!opt.quiet)
-    print_summary(canvas, job.options.samples, std::to_string(stats.threads) + " threads", stats.seconds, stats.rays);
+    print_summary(canvas, job.options.samples, job.options.integrator, std::to_string(stats.threads) + " threads",
+                  stats.seconds, stats.rays);
   return 0;
 }
 
@@ -182,17 +208,20 @@ int run_render(const RenderCommandOptions& opt) {
 void add_render_command(CLI::App& app, int& exit_code) {
   auto opt = std::make_shared<RenderCommandOptions>();
   CLI::App* sub = app.add_subcommand(
-      "render", "Render a scene (Ray Tracer Challenge YAML, plus 'add: torus') to a PNG or PPM image");
+      "render", "Render a scene (Ray Tracer Challenge YAML, plus 'add: torus') to a PNG, PPM or OpenEXR image");
   add_version_flag(*sub);
-  sub->footer(std::string("When done it prints WIDTHxHEIGHT, samples, threads, time, rays and Mrays/s on stderr;\n"
-                          "while it renders, a progress bar when stderr is a terminal.\n"
+  sub->footer(std::string("When done it prints WIDTHxHEIGHT, samples, 'path integrator' for the path tracer,\n"
+                          "threads, time, rays and Mrays/s on stderr; while it renders, a progress bar when\n"
+                          "stderr is a terminal.\n"
                           "\nExample:\n  ") +
               kRenderExample + "\n\n" + kDocsLine + "\nEvery error message and exit status: docs/errors.md.");
   CLI::Option* scene = sub->add_option("scene", opt->scene, "Scene file (.yml/.yaml)")->required();
   // Under mpirun the scene is read by every rank, and a rank that cannot read
   // it says so through rank 0 (run_render_mpi), not alone.
   if (!launched_by_mpi()) scene->check(CLI::ExistingFile);
-  sub->add_option("-o,--output", opt->output, "Output image: .png (8-bit sRGB) or .ppm (the book's plain PPM)")
+  sub->add_option("-o,--output", opt->output,
+                  "Output image: .png (8-bit sRGB; with --linear the linear values), .ppm (the book's plain PPM: "
+                  "8-bit linear values) or .exr (OpenEXR: 32-bit float linear RGB, unclamped, for HDR work)")
       ->required();
   const auto side = CLI::Range(1, kMaxImageSide);
   sub->add_option("--width", opt->width, "Image width in pixels (overrides the camera's; keeps its field of view)")
@@ -213,6 +242,31 @@ void add_render_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   sub->add_option("--solver", opt->solver, "Quartic solver for every torus (overrides the scene's 'solver:')")
       ->check(CLI::IsMember({"default", "ferrari", "tianheng"}));
+  sub->add_option("--integrator", opt->integrator,
+                  "How a camera ray's colour is computed: whitted (the book's recursive shading) or path (the path "
+                  "tracer); overrides the scene's 'add: integrator' (default: the scene's, else whitted)")
+      ->check(CLI::IsMember({"whitted", "path"}));
+  static_assert(kMaxExposureStops == 32, "the message and the help below give the range");
+  const CLI::Validator stops(
+      [](std::string& s) {
+        std::size_t used = 0;
+        double v = 0;
+        try {
+          v = std::stod(s, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != s.size() || !(std::fabs(v) <= kMaxExposureStops))
+          return "must be a number of stops from -32 to 32, got '" + s + "'";
+        return std::string{};
+      },
+      "STOPS");
+  sub->add_option("--exposure", opt->exposure,
+                  "Multiply every pixel by 2^E before it is written, in every format (stops, -32 to 32)")
+      ->check(stops)
+      ->capture_default_str();
+  sub->add_flag("--linear", opt->linear,
+                "PNG only: write the linear values, as the PPM holds them (no sRGB transfer, no colour chunk)");
   sub->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
   sub->callback([opt, &exit_code] { exit_code = run_render(*opt); });
 }

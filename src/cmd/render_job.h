@@ -26,14 +26,24 @@ struct RenderCommandOptions {
   int max_depth = kDefaultRemaining;
   int tile_size = 16;
   std::string solver;
+  double exposure = 0;     // stops: every pixel times 2^exposure when written
+  bool linear = false;     // a PNG of the linear values (PNG output only)
+  std::string integrator;  // "whitted" or "path"; empty: the scene's, else whitted
   bool quiet = false;
 };
+
+// The --exposure range, in stops.
+inline constexpr double kMaxExposureStops = 32;
+
+// "whitted" or "path" (the --integrator names), and back.
+const char* integrator_option_name(Integrator integrator);
+std::optional<Integrator> integrator_from_option(const std::string& name);
 
 // A scene loaded and checked, ready to render.
 struct RenderJob {
   Scene scene;
   Camera camera;          // with --width and --height applied
-  RenderOptions options;  // samples, threads, depth; cancelled by interrupts
+  RenderOptions options;  // integrator, samples, threads, depth; cancelled by interrupts
 };
 
 // The job, or why there is none: `error` (without the "toroid render: "
@@ -44,17 +54,22 @@ struct PreparedRender {
   int exit_code = 2;
 };
 
-// Checks the output path (when `check_output`), loads the scene (its
-// warnings go to `on_warning`) and applies the size options.
+// Checks --linear against the output's format and the output path (when
+// `check_output`), loads the scene (its warnings go to `on_warning`) and
+// applies the size options and the integrator (--integrator, else the
+// scene's, else whitted).
 PreparedRender prepare_render(const RenderCommandOptions& opt, bool check_output,
                               const std::function<void(const std::string&)>& on_warning);
 
-// Writes the image atomically; the exit status (0; 1 when it cannot be
-// written, with a message; 128 + signal when interrupted).
+// Writes the image atomically, with --exposure and --linear; the exit
+// status (0; 1 when it cannot be written, with a message; 128 + signal when
+// interrupted).
 int write_output(const Canvas& canvas, const RenderCommandOptions& opt);
 
-// The final line: "WxH, N samples, WORKERS, S s, R rays, M Mrays/s".
-void print_summary(const Canvas& canvas, int samples, const std::string& workers, double seconds, std::uint64_t rays);
+// The final line: "WxH, N samples, WORKERS, S s, R rays, M Mrays/s", with
+// "path integrator, " before WORKERS for the path tracer.
+void print_summary(const Canvas& canvas, int samples, Integrator integrator, const std::string& workers, double seconds,
+                   std::uint64_t rays);
 
 // SIGINT and SIGTERM set interrupted(); interrupted_exit() says so (unless
 // told not to) and gives the exit status, 128 + the signal.

@@ -32,6 +32,30 @@ if ! cmp -s "$work/single.png" "$work/tiles7.png"; then
 fi
 echo "3 ranks, --tile-size 7: same image; $(tail -n 1 "$work/log")"
 
+# The new outputs and options go the same way: an EXR with --exposure, and a
+# --linear PNG with the path integrator's summary.
+"$toroid" render "$scene" -o "$work/single.exr" "${size[@]}" --exposure 1.5 --threads 2 --quiet
+"$mpiexec" --oversubscribe -np 2 "$toroid" render "$scene" -o "$work/ranks2.exr" "${size[@]}" --exposure 1.5 \
+  --threads 1 2>"$work/log"
+if ! cmp -s "$work/single.exr" "$work/ranks2.exr"; then
+  echo "FAIL: 2 ranks, .exr with --exposure 1.5: the image differs from the single-process render" >&2
+  status=1
+fi
+echo "2 ranks, .exr, --exposure 1.5: same image; $(tail -n 1 "$work/log")"
+"$toroid" render "$scene" -o "$work/single-linear.png" "${size[@]}" --linear --integrator path --threads 2 --quiet
+"$mpiexec" --oversubscribe -np 2 "$toroid" render "$scene" -o "$work/ranks2-linear.png" "${size[@]}" --linear \
+  --integrator path --threads 1 2>"$work/log"
+summary=$(tail -n 1 "$work/log")
+if ! cmp -s "$work/single-linear.png" "$work/ranks2-linear.png"; then
+  echo "FAIL: 2 ranks, --linear --integrator path: the image differs from the single-process render" >&2
+  status=1
+fi
+if [[ "$summary" != *", 2 samples, path integrator, 2 ranks, "* ]]; then
+  echo "FAIL: the summary does not name the path integrator: '$summary'" >&2
+  status=1
+fi
+echo "2 ranks, --linear --integrator path: same image; $summary"
+
 # Every rank renders part of the image: "..., 3 ranks, 3 threads (tiles by
 # rank: 171 62 67), ...". Long enough (16 samples) that a rank started late
 # on a busy machine still finds work left.

@@ -3,9 +3,10 @@
 # What goes wrong in an MPI job ends it with a clear message, a non-zero
 # status and no output file: a scene error (reported once), a scene that one
 # rank cannot read, a rank whose scene differs, a rank killed mid-render
-# (SIGKILL), and Ctrl-C (SIGINT) on mpirun.
+# (SIGKILL), and Ctrl-C (SIGINT) on mpirun; ranks given different
+# --exposure, --linear or --integrator options.
 #   tests/mpi/faults.sh CASE MPIEXEC TOROID SOURCE_DIR WORK_DIR
-#   CASE: scene-error | unreadable-on-one-rank | different-scene | killed-rank | interrupt
+#   CASE: scene-error | unreadable-on-one-rank | different-scene | different-options | killed-rank | interrupt
 set -euo pipefail
 case_name=$1 mpiexec=$2 toroid=$3 source=$4 work=$5
 rm -rf "$work" && mkdir -p "$work/out"
@@ -91,6 +92,16 @@ case "$case_name" in
     "$mpiexec" --oversubscribe -np 2 "$toroid" render "$scene" -o "$out" "${small[@]}" : \
       -np 1 "$toroid" render "$work/stale.yaml" -o "$out" "${small[@]}" 2>"$work/log" || status=$?
     expect_failure "$status" "toroid render: rank 2: its scene file or options differ from rank 0's" 1
+    ;;
+  different-options)
+    # rank 1 alone is given each option: the ranks must refuse to render
+    for extra in "--exposure 1" "--exposure 1e-9" "--linear" "--integrator path"; do
+      status=0
+      # shellcheck disable=SC2086 # $extra is two words
+      "$mpiexec" --oversubscribe -np 1 "$toroid" render "$scene" -o "$out" "${small[@]}" : \
+        -np 1 "$toroid" render "$scene" -o "$out" "${small[@]}" $extra 2>"$work/log" || status=$?
+      expect_failure "$status" "toroid render: rank 1: its scene file or options differ from rank 0's" 1
+    done
     ;;
   killed-rank)
     long_render

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -80,9 +81,14 @@ std::uint64_t fingerprint(const RenderCommandOptions& opt, const RenderJob& job)
   auto mix = [&h](unsigned char c) { h = (h ^ c) * 0x100000001b3ULL; };
   std::ifstream in(opt.scene, std::ios::binary);
   for (std::istreambuf_iterator<char> it(in), end; it != end; ++it) mix(static_cast<unsigned char>(*it));
+  // The exposure as a hexadecimal float: every bit of it counts.
+  char exposure[64];
+  std::snprintf(exposure, sizeof exposure, "%a", opt.exposure);
   const std::string options = std::to_string(job.camera.hsize()) + "x" + std::to_string(job.camera.vsize()) + " " +
                               std::to_string(opt.samples) + " " + std::to_string(opt.max_depth) + " " + opt.solver +
-                              " " + std::to_string(job.options.tile_size);
+                              " " + std::to_string(job.options.tile_size) + " " +
+                              integrator_option_name(job.options.integrator) + " " + exposure +
+                              (opt.linear ? " linear" : "");
   for (char c : options) mix(static_cast<unsigned char>(c));
   return h;
 }
@@ -287,7 +293,7 @@ int run_render_mpi(const RenderCommandOptions& opt) {
     workers << size << (size == 1 ? " rank, " : " ranks, ") << all_threads << " threads (tiles by rank:";
     for (int t : gathered.tiles) workers << ' ' << t;
     workers << ')';
-    print_summary(canvas, opt.samples, workers.str(), gathered.seconds, gathered.rays);
+    print_summary(canvas, opt.samples, job.options.integrator, workers.str(), gathered.seconds, gathered.rays);
   }
   return code == 0 ? finish(0) : code;
 }

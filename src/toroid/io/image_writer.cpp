@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "toroid/io/image_writer.h"
+#include "toroid/io/exr_image.h"
 #include "toroid/io/srgb.h"
 
 #include <png.h>
@@ -39,9 +40,14 @@ void png_warning_fn(png_structp, png_const_charp) {}
 
 bool cancelled(const std::atomic<bool>* cancel) { return cancel && cancel->load(std::memory_order_relaxed); }
 
+// 0..1 to 0..255, rounded, as canvas_to_ppm writes a component.
+int ppm_byte(double component) { return static_cast<int>(std::lround(std::clamp(component, 0.0, 1.0) * 255.0)); }
+
 // Returns an empty string on success or when cancelled (then `stopped` is
 // set), else what went wrong.
-std::string write_png(const Canvas& canvas, FILE* f, const std::atomic<bool>* cancel, bool& stopped) {
+std::string write_png(const Canvas& canvas, FILE* f, const ImageWriteOptions& options, bool& stopped) {
+  const std::atomic<bool>* cancel = options.cancel;
+  const double scale = options.scale;
   std::string error;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, png_error_fn, png_warning_fn);
   if (!png) return "out of memory";
@@ -59,7 +65,10 @@ std::string write_png(const Canvas& canvas, FILE* f, const std::atomic<bool>* ca
   png_init_io(png, f);
   png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), 8, PNG_COLOR_TYPE_RGB,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  // A linear PNG carries no colour chunk, as the PPM carries none, so that
+  // every viewer shows the two files alike. (A gAMA 1.0 chunk would be
+  // honoured by some viewers and ignored by others.)
+  if (!options.linear_png) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   // zlib's fastest level with the Paeth filter: several times faster to
   // write than libpng's defaults (a 1600x1600 image: 0.65 s -> 0.11 s), for
   // larger files (bagels.png, 800x600: 138 KB -> 195 KB).
@@ -74,14 +83,48 @@ std::string write_png(const Canvas& canvas, FILE* f, const std::atomic<bool>* ca
     }
     for (int x = 0; x < w; ++x) {
       const Color c = canvas.pixel_at(x, y);
-      row[3 * x + 0] = linear_to_srgb8(c.r);
-      row[3 * x + 1] = linear_to_srgb8(c.g);
-      row[3 * x + 2] = linear_to_srgb8(c.b);
+      const double rgb[3] = {c.r * scale, c.g * scale, c.b * scale};
+      for (int i = 0; i < 3; ++i)
+        row[3 * x + i] = options.linear_png ? static_cast<unsigned char>(ppm_byte(rgb[i])) : linear_to_srgb8(rgb[i]);
     }
     png_write_row(png, row.data());
   }
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
+  return {};
+}
+
+// The book's plain PPM (canvas_to_ppm's text, byte for byte), of the
+// canvas times `scale`, written a row at a time.
+std::string write_ppm(const Canvas& canvas, FILE* f, double scale, const std::atomic<bool>* cancel, bool& stopped) {
+  constexpr std::size_t kMaxLine = 70;  // the book's limit on a PPM line
+  std::string text = "P3\n" + std::to_string(canvas.width()) + " " + std::to_string(canvas.height()) + "\n255\n";
+  for (int y = 0; y < canvas.height(); ++y) {
+    if (cancelled(cancel)) {
+      stopped = true;
+      return {};
+    }
+    std::size_t line_length = 0;
+    for (int x = 0; x < canvas.width(); ++x) {
+      const Color c = canvas.pixel_at(x, y);
+      for (const double component : {c.r * scale, c.g * scale, c.b * scale}) {
+        const std::string token = std::to_string(ppm_byte(component));
+        if (line_length == 0) {
+          line_length = token.size();
+        } else if (line_length + 1 + token.size() > kMaxLine) {
+          text += '\n';
+          line_length = token.size();
+        } else {
+          text += ' ';
+          line_length += 1 + token.size();
+        }
+        text += token;
+      }
+    }
+    text += '\n';
+    if (std::fwrite(text.data(), 1, text.size(), f) != text.size()) return std::strerror(errno);
+    text.clear();
+  }
   return {};
 }
 
@@ -93,9 +136,10 @@ namespace {
   throw ImageWriteError("cannot write '" + path + "': " + what);
 }
 
-void check_extension(const std::string& path) {
-  const std::string ext = lower_extension(path);
-  if (ext != ".png" && ext != ".ppm") fail(path, "unknown image format '" + ext + "' (use a .png or .ppm file name)");
+ImageFormat check_extension(const std::string& path) {
+  const std::optional<ImageFormat> format = image_format_of(path);
+  if (!format) fail(path, "unknown image format '" + lower_extension(path) + "' (use a .png, .ppm or .exr file name)");
+  return *format;
 }
 
 // Creates an empty temporary file beside `path` (same folder, so that
@@ -118,6 +162,14 @@ std::string create_temporary_beside(const std::string& path, int& fd) {
 
 }  // namespace
 
+std::optional<ImageFormat> image_format_of(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".png") return ImageFormat::png;
+  if (ext == ".ppm") return ImageFormat::ppm;
+  if (ext == ".exr") return ImageFormat::exr;
+  return std::nullopt;
+}
+
 void check_image_path(const std::string& path) {
   check_extension(path);
   int fd = -1;
@@ -127,8 +179,17 @@ void check_image_path(const std::string& path) {
 }
 
 bool write_image(const Canvas& canvas, const std::string& path, const std::atomic<bool>* cancel) {
-  check_extension(path);
+  ImageWriteOptions options;
+  options.cancel = cancel;
+  return write_image(canvas, path, options);
+}
+
+bool write_image(const Canvas& canvas, const std::string& path, const ImageWriteOptions& options) {
+  const ImageFormat format = check_extension(path);
   if (canvas.width() <= 0 || canvas.height() <= 0) fail(path, "the image is empty");
+  if (!std::isfinite(options.scale) || options.scale <= 0)
+    fail(path, "the scale " + std::to_string(options.scale) + " is not a positive finite number");
+  const std::atomic<bool>* cancel = options.cancel;
   int fd = -1;
   const std::string tmp = create_temporary_beside(path, fd);
   FILE* f = fdopen(fd, "wb");
@@ -140,12 +201,10 @@ bool write_image(const Canvas& canvas, const std::string& path, const std::atomi
   }
   std::string error;
   bool stopped = false;
-  if (lower_extension(path) == ".png") {
-    error = write_png(canvas, f, cancel, stopped);
-  } else {
-    const std::string ppm = canvas_to_ppm(canvas);
-    stopped = cancelled(cancel);
-    if (!stopped && std::fwrite(ppm.data(), 1, ppm.size(), f) != ppm.size()) error = std::strerror(errno);
+  switch (format) {
+    case ImageFormat::png: error = write_png(canvas, f, options, stopped); break;
+    case ImageFormat::ppm: error = write_ppm(canvas, f, options.scale, cancel, stopped); break;
+    case ImageFormat::exr: error = detail::write_exr(canvas, options.scale, f, cancel, stopped); break;
   }
   if (std::fflush(f) != 0 && error.empty()) error = std::strerror(errno);
   if (std::ferror(f) && error.empty()) error = "write error";

@@ -5,12 +5,17 @@
 #include <gtest/gtest.h>
 #include <png.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 #include <vector>
+
+#include "support/image_files.h"
 
 namespace toroid {
 namespace {
@@ -63,7 +68,7 @@ TEST(ImageWriter, ACancelledWriteLeavesThePathAsItWas) {
   const fs::path d = temp_dir("cancel");
   Canvas c(4, 4);
   const std::atomic<bool> cancel{true}, go_on{false};
-  for (const char* name : {"x.png", "x.ppm"}) {
+  for (const char* name : {"x.png", "x.ppm", "x.exr"}) {
     SCOPED_TRACE(name);
     const std::string path = (d / name).string();
     EXPECT_FALSE(write_image(c, path, &cancel));
@@ -97,6 +102,82 @@ TEST(ImageWriter, Ppm) {
   fs::remove_all(d);
 }
 
+// Values out of [0, 1], NaN-free, on rows long enough that the book's
+// 70-character lines wrap.
+Canvas wide_canvas() {
+  Canvas c(31, 3);
+  for (int y = 0; y < c.height(); ++y)
+    for (int x = 0; x < c.width(); ++x) c.write_pixel(x, y, Color{x / 20.0 - 0.2, y * 0.37 + x / 97.0, 0.5 + x * 0.01});
+  return c;
+}
+
+std::string file_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+TEST(ImageWriter, PpmIsTheBooksTextRowByRow) {
+  const fs::path d = temp_dir("ppmwide");
+  const Canvas c = wide_canvas();
+  ASSERT_TRUE(write_image(c, (d / "x.ppm").string()));
+  EXPECT_EQ(file_text(d / "x.ppm"), canvas_to_ppm(c));
+  fs::remove_all(d);
+}
+
+Canvas scaled(const Canvas& c, double s) {
+  Canvas out(c.width(), c.height());
+  for (int y = 0; y < c.height(); ++y)
+    for (int x = 0; x < c.width(); ++x) out.write_pixel(x, y, c.pixel_at(x, y) * s);
+  return out;
+}
+
+TEST(ImageWriter, TheScaleMultipliesEveryPixelBeforeEncoding) {
+  const fs::path d = temp_dir("scale");
+  const Canvas c = wide_canvas();
+  ImageWriteOptions options;
+  options.scale = 0.25;
+  ASSERT_TRUE(write_image(c, (d / "x.ppm").string(), options));
+  EXPECT_EQ(file_text(d / "x.ppm"), canvas_to_ppm(scaled(c, 0.25)));
+  ASSERT_TRUE(write_image(c, (d / "x.png").string(), options));
+  ASSERT_TRUE(write_image(scaled(c, 0.25), (d / "y.png").string()));
+  EXPECT_EQ(file_text(d / "x.png"), file_text(d / "y.png"));
+  fs::remove_all(d);
+}
+
+// The chunk types of a PNG file, in order.
+std::vector<std::string> png_chunks(const std::string& data) {
+  std::vector<std::string> types;
+  for (std::size_t at = 8; at + 8 <= data.size();) {
+    const auto byte = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(data[i])); };
+    const std::uint32_t length = byte(at) << 24 | byte(at + 1) << 16 | byte(at + 2) << 8 | byte(at + 3);
+    types.push_back(data.substr(at + 4, 4));
+    at += 12 + length;
+  }
+  return types;
+}
+
+TEST(ImageWriter, ALinearPngHoldsThePpmsNumbersAndNoColourChunk) {
+  const fs::path d = temp_dir("linear");
+  const Canvas c = wide_canvas();
+  ImageWriteOptions options;
+  options.linear_png = true;
+  ASSERT_TRUE(write_image(c, (d / "x.png").string(), options));
+  const std::vector<unsigned char> px = toroid::testing::png_samples(d / "x.png");
+  ASSERT_EQ(px.size(), 31u * 3u * 3u);
+  EXPECT_EQ(px, toroid::testing::ppm_samples(canvas_to_ppm(c)));
+  const std::vector<std::string> chunks = png_chunks(file_text(d / "x.png"));
+  for (const char* colour : {"sRGB", "gAMA", "cHRM", "iCCP"})
+    EXPECT_EQ(std::count(chunks.begin(), chunks.end(), colour), 0) << colour;
+  // The sRGB PNG, by contrast, says it is sRGB.
+  ASSERT_TRUE(write_image(c, (d / "s.png").string()));
+  const std::vector<std::string> srgb = png_chunks(file_text(d / "s.png"));
+  EXPECT_EQ(std::count(srgb.begin(), srgb.end(), "sRGB"), 1);
+  EXPECT_NE(toroid::testing::png_samples(d / "s.png"), px);
+  fs::remove_all(d);
+}
+
 TEST(ImageWriter, Errors) {
   const fs::path d = temp_dir("err");
   Canvas c(2, 2);
@@ -105,7 +186,7 @@ TEST(ImageWriter, Errors) {
     ADD_FAILURE();
   } catch (const ImageWriteError& e) {
     EXPECT_EQ(std::string(e.what()), "cannot write '" + (d / "x.jpg").string() +
-                                         "': unknown image format '.jpg' (use a .png or .ppm file name)");
+                                         "': unknown image format '.jpg' (use a .png, .ppm or .exr file name)");
   }
   const std::string missing = (d / "nodir" / "x.png").string();
   try {
@@ -133,6 +214,7 @@ TEST(ImageWriter, CheckingAWritablePathLeavesNothingBehind) {
   const fs::path d = temp_dir("check");
   EXPECT_EQ(check_error((d / "x.png").string()), "");
   EXPECT_EQ(check_error((d / "x.ppm").string()), "");
+  EXPECT_EQ(check_error((d / "x.exr").string()), "");
   EXPECT_TRUE(fs::is_empty(d));
   std::ofstream(d / "old.png") << "old";
   EXPECT_EQ(check_error((d / "old.png").string()), "");
@@ -146,7 +228,8 @@ TEST(ImageWriter, CheckingAWritablePathLeavesNothingBehind) {
 TEST(ImageWriter, CheckingNamesWhatCannotBeWritten) {
   const fs::path d = temp_dir("checkbad");
   const std::string jpg = (d / "x.jpg").string();
-  EXPECT_EQ(check_error(jpg), "cannot write '" + jpg + "': unknown image format '.jpg' (use a .png or .ppm file name)");
+  EXPECT_EQ(check_error(jpg),
+            "cannot write '" + jpg + "': unknown image format '.jpg' (use a .png, .ppm or .exr file name)");
   const std::string nodir = (d / "nodir" / "x.png").string();
   EXPECT_EQ(check_error(nodir), "cannot write '" + nodir + "': folder '" + (d / "nodir").string() + "' does not exist");
   std::ofstream(d / "file") << "x";
