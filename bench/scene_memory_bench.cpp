@@ -56,7 +56,7 @@ void BM_HeapPerTorus(benchmark::State& state) {
   const std::string small = scene_with_tori(1, distinct), large = scene_with_tori(1 + n, distinct);
   std::size_t heap_small = 0, heap_large = 0, index_bytes = 0, list_bytes = 0, chunk_bytes = 0;
   for (auto _ : state) {
-    toroid::Scene a{{}, toroid::Camera(1, 1, 1)}, b{{}, toroid::Camera(1, 1, 1)};
+    toroid::Scene a{{}, toroid::Camera(1, 1, 1), {}}, b{{}, toroid::Camera(1, 1, 1), {}};
     heap_small = heap_of_loaded_scene(small, &a);
     heap_large = heap_of_loaded_scene(large, &b);
     index_bytes = b.world.index.bytes() - a.world.index.bytes();

@@ -18,8 +18,8 @@ if [ -z "$clang_format" ]; then
   clang_format=$(command -v clang-format-14 || command -v clang-format)
 fi
 
-mapfile -t cxx < <(git ls-files --cached --others --exclude-standard -- '*.h' '*.cpp' '*.c')
-mapfile -t scripts < <(git ls-files --cached --others --exclude-standard -- '*.sh' '*.awk' '*.py' 'CMakeLists.txt' '*/CMakeLists.txt' '.ci/run')
+mapfile -t cxx < <(git ls-files --cached --others --exclude-standard -- '*.h' '*.cpp' '*.c' '*.cu' '*.cuh')
+mapfile -t scripts < <(git ls-files --cached --others --exclude-standard -- '*.sh' '*.awk' '*.py' '*.cmake' 'CMakeLists.txt' '*/CMakeLists.txt' '.ci/run')
 spdx="SPDX-License-Identifier: Apache-2.0"
 status=0
 
