@@ -11,6 +11,9 @@ install(TARGETS toroid_torus EXPORT toroidTargets
 file(GLOB toroid_torus_headers ${PROJECT_SOURCE_DIR}/src/toroid/torus/*.h)
 list(FILTER toroid_torus_headers EXCLUDE REGEX "_test[^/]*\\.h$")
 install(FILES ${toroid_torus_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/toroid/torus COMPONENT torus)
+# TOROID_HD, which the torus headers use (empty outside nvcc).
+install(FILES ${PROJECT_SOURCE_DIR}/src/toroid/math/device.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/toroid/math
+  COMPONENT torus)
 install(FILES ${PROJECT_SOURCE_DIR}/src/toroid/torus_c.h ${TOROID_VERSION_HEADER}
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/toroid COMPONENT torus)
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/toroid COMPONENT torus)

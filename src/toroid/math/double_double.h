@@ -8,20 +8,22 @@
 
 #include <cmath>
 
+#include "toroid/math/device.h"
+
 namespace toroid {
 
 struct DoubleDouble {
   double hi, lo;
 };
 
-inline DoubleDouble two_sum(double a, double b) {
+TOROID_HD inline DoubleDouble two_sum(double a, double b) {
   const double s = a + b;
   const double bb = s - a;
   return {s, (a - (s - bb)) + (b - bb)};
 }
 
 // a + t * b, exactly up to ~2^-106 relative.
-inline DoubleDouble add_scaled(double a, double t, double b) {
+TOROID_HD inline DoubleDouble add_scaled(double a, double t, double b) {
   const double p = t * b;
   const double p_err = std::fma(t, b, -p);
   const DoubleDouble s = two_sum(a, p);
@@ -30,26 +32,26 @@ inline DoubleDouble add_scaled(double a, double t, double b) {
   return {hi, lo - (hi - s.hi)};
 }
 
-inline DoubleDouble two_prod(double a, double b) {
+TOROID_HD inline DoubleDouble two_prod(double a, double b) {
   const double p = a * b;
   return {p, std::fma(a, b, -p)};
 }
 
-inline DoubleDouble dd_add(DoubleDouble a, DoubleDouble b) {
+TOROID_HD inline DoubleDouble dd_add(DoubleDouble a, DoubleDouble b) {
   const DoubleDouble s = two_sum(a.hi, b.hi);
   const double lo = s.lo + a.lo + b.lo;
   const double hi = s.hi + lo;
   return {hi, lo - (hi - s.hi)};
 }
 
-inline DoubleDouble dd_mul(DoubleDouble a, DoubleDouble b) {
+TOROID_HD inline DoubleDouble dd_mul(DoubleDouble a, DoubleDouble b) {
   DoubleDouble p = two_prod(a.hi, b.hi);
   p.lo += a.hi * b.lo + a.lo * b.hi;
   const double hi = p.hi + p.lo;
   return {hi, p.lo - (hi - p.hi)};
 }
 
-inline DoubleDouble dd_sqrt(DoubleDouble a) {
+TOROID_HD inline DoubleDouble dd_sqrt(DoubleDouble a) {
   if (a.hi <= 0) return {0, 0};
   const double s = std::sqrt(a.hi);
   const DoubleDouble s2 = two_prod(s, s);

@@ -14,7 +14,7 @@ namespace toroid {
 namespace {
 
 // One Newton step on x^3 + B x^2 + C x + D, kept only when it lowers |f|.
-double polish(double x, double B, double C, double D) {
+TOROID_HD double polish(double x, double B, double C, double D) {
   const double f = ((x + B) * x + C) * x + D;
   const double df = (3 * x + 2 * B) * x + C;
   if (f == 0 || df == 0) return x;
@@ -25,7 +25,7 @@ double polish(double x, double B, double C, double D) {
 
 }  // namespace
 
-int solve_cubic(double a, double b, double c, double d, double roots[3]) {
+TOROID_HD int solve_cubic(double a, double b, double c, double d, double roots[3]) {
   if (a == 0) return solve_quadratic(b, c, d, roots);
   // Monic x^3 + B x^2 + C x + D, depressed by x = t - B/3 to t^3 + p t + q.
   const double B = b / a, C = c / a, D = d / a;

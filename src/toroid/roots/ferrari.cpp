@@ -9,7 +9,7 @@
 
 namespace toroid {
 
-int solve_quartic_ferrari(double a, double b, double c, double d, double e, double roots[4]) {
+TOROID_HD int solve_quartic_ferrari(double a, double b, double c, double d, double e, double roots[4]) {
   if (a == 0) return solve_cubic(b, c, d, e, roots);
   // Monic x^4 + B x^3 + C x^2 + D x + E, depressed by x = y - B/4 to
   // y^4 + p y^2 + q y + r.

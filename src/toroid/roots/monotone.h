@@ -4,13 +4,15 @@
 
 #include <cmath>
 
+#include "toroid/math/device.h"
+
 namespace toroid {
 
 // Root of a monotone function on [lo, hi] whose values at the ends have
 // opposite signs, from the first guess x0 (inside). Newton, guarded by
 // bisection; `f` returns (value, derivative). Stops when a step is below `tol`.
 template <typename F>
-double solve_monotone(const F& f, double lo, double hi, bool lo_negative, double x0, double tol) {
+TOROID_HD double solve_monotone(const F& f, double lo, double hi, bool lo_negative, double x0, double tol) {
   double x = x0;
   for (int it = 0; it < 100; ++it) {
     const auto [v, dv] = f(x);

@@ -11,7 +11,7 @@ namespace {
 
 // b^2 - 4ac with the rounding errors of both products recovered by fma
 // (Kahan's trick), so a discriminant that is tiny next to b^2 keeps its sign.
-double discriminant(double a, double b, double c) {
+TOROID_HD double discriminant(double a, double b, double c) {
   const double p = b * b;
   const double q = 4 * a * c;  // 4a is exact
   const double dp = std::fma(b, b, -p);
@@ -21,7 +21,7 @@ double discriminant(double a, double b, double c) {
 
 }  // namespace
 
-int solve_quadratic(double a, double b, double c, double roots[2]) {
+TOROID_HD int solve_quadratic(double a, double b, double c, double roots[2]) {
   if (a == 0) {
     if (b == 0) return 0;  // constant: no roots (or every x when c == 0)
     roots[0] = -c / b;

@@ -18,23 +18,23 @@ namespace toroid {
 
 namespace {
 
-bool is_zero(double x, double m) { return std::fabs(x) <= kTianhengTolerance * DBL_EPSILON * m; }
+TOROID_HD bool is_zero(double x, double m) { return std::fabs(x) <= kTianhengTolerance * DBL_EPSILON * m; }
 
-double sgn(double x) { return x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0); }
+TOROID_HD double sgn(double x) { return x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0); }
 
-double sqrt0(double x) { return std::sqrt(std::max(x, 0.0)); }  // rounding may push a square below 0
+TOROID_HD double sqrt0(double x) { return std::sqrt(std::max(x, 0.0)); }  // rounding may push a square below 0
 
 }  // namespace
 
-bool TianhengQuantities::D_zero() const { return is_zero(D, mD); }
-bool TianhengQuantities::E_zero() const { return is_zero(E, mE); }
-bool TianhengQuantities::F_zero() const { return is_zero(F, mF); }
-bool TianhengQuantities::A_zero() const { return is_zero(A, mA); }
-bool TianhengQuantities::B_zero() const { return is_zero(B, mB); }
-bool TianhengQuantities::C_zero() const { return is_zero(C, mC); }
-bool TianhengQuantities::Delta_zero() const { return is_zero(Delta, mDelta); }
+TOROID_HD bool TianhengQuantities::D_zero() const { return is_zero(D, mD); }
+TOROID_HD bool TianhengQuantities::E_zero() const { return is_zero(E, mE); }
+TOROID_HD bool TianhengQuantities::F_zero() const { return is_zero(F, mF); }
+TOROID_HD bool TianhengQuantities::A_zero() const { return is_zero(A, mA); }
+TOROID_HD bool TianhengQuantities::B_zero() const { return is_zero(B, mB); }
+TOROID_HD bool TianhengQuantities::C_zero() const { return is_zero(C, mC); }
+TOROID_HD bool TianhengQuantities::Delta_zero() const { return is_zero(Delta, mDelta); }
 
-TianhengQuantities tianheng_quantities(double a, double b, double c, double d, double e) {
+TOROID_HD TianhengQuantities tianheng_quantities(double a, double b, double c, double d, double e) {
   TianhengQuantities q{};
   const double aa = a * a, bb = b * b;
   q.D = 3 * bb - 8 * a * c;
@@ -60,7 +60,7 @@ TianhengQuantities tianheng_quantities(double a, double b, double c, double d, d
   return q;
 }
 
-TianhengCase classify_tianheng(const TianhengQuantities& q) {
+TOROID_HD TianhengCase classify_tianheng(const TianhengQuantities& q) {
   const bool D0 = q.D_zero(), E0 = q.E_zero(), F0 = q.F_zero();
   if (D0 && E0 && F0) return TianhengCase::QuadrupleRoot;
   if (q.A_zero() && q.B_zero() && q.C_zero()) return TianhengCase::TripleRoot;
@@ -69,11 +69,11 @@ TianhengCase classify_tianheng(const TianhengQuantities& q) {
   return q.Delta > 0 ? TianhengCase::DeltaPositive : TianhengCase::DeltaNegative;
 }
 
-TianhengCase classify_tianheng(double a, double b, double c, double d, double e) {
+TOROID_HD TianhengCase classify_tianheng(double a, double b, double c, double d, double e) {
   return classify_tianheng(tianheng_quantities(a, b, c, d, e));
 }
 
-int solve_quartic_tianheng(double a, double b, double c, double d, double e, double roots[4]) {
+TOROID_HD int solve_quartic_tianheng(double a, double b, double c, double d, double e, double roots[4]) {
   if (a == 0) return solve_cubic(b, c, d, e, roots);
   // D..F, A..C and Delta are homogeneous of degrees 2..12 in the coefficients,
   // so Delta overflows once they pass about 2^85. Scaling every coefficient by

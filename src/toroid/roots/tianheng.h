@@ -5,6 +5,8 @@
 // solve_quartic_tianheng in quartic.h; docs/torus.md derives every formula.
 #pragma once
 
+#include "toroid/math/device.h"
+
 namespace toroid {
 
 // The quantities of a x^4 + b x^3 + c x^2 + d x + e. With y = 4 a x + b the
@@ -27,19 +29,19 @@ struct TianhengQuantities {
   double D, E, F, A, B, C, Delta;
   double mD, mE, mF, mA, mB, mC, mDelta;
 
-  bool D_zero() const;
-  bool E_zero() const;
-  bool F_zero() const;
-  bool A_zero() const;
-  bool B_zero() const;
-  bool C_zero() const;
-  bool Delta_zero() const;
+  TOROID_HD bool D_zero() const;
+  TOROID_HD bool E_zero() const;
+  TOROID_HD bool F_zero() const;
+  TOROID_HD bool A_zero() const;
+  TOROID_HD bool B_zero() const;
+  TOROID_HD bool C_zero() const;
+  TOROID_HD bool Delta_zero() const;
 };
 
 // Multiplier of DBL_EPSILON * m_X in the zero tests (see above).
 inline constexpr double kTianhengTolerance = 16;
 
-TianhengQuantities tianheng_quantities(double a, double b, double c, double d, double e);
+TOROID_HD TianhengQuantities tianheng_quantities(double a, double b, double c, double d, double e);
 
 // The paper's case table, in the order it is tested.
 enum class TianhengCase {
@@ -51,7 +53,7 @@ enum class TianhengCase {
   DeltaNegative = 6,   // 6. Delta < 0: four simple real roots (D > 0, F > 0) or none
 };
 
-TianhengCase classify_tianheng(double a, double b, double c, double d, double e);
-TianhengCase classify_tianheng(const TianhengQuantities& q);
+TOROID_HD TianhengCase classify_tianheng(double a, double b, double c, double d, double e);
+TOROID_HD TianhengCase classify_tianheng(const TianhengQuantities& q);
 
 }  // namespace toroid

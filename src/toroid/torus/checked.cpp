@@ -14,31 +14,31 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
-bool torus_radii_valid(double major, double minor) {
+TOROID_HD bool torus_radii_valid(double major, double minor) {
   return std::isfinite(major) && std::isfinite(minor) && major > 0 && minor > 0;
 }
 
-bool torus_ray_valid(const double origin[3], const double direction[3]) {
+TOROID_HD bool torus_ray_valid(const double origin[3], const double direction[3]) {
   for (int i = 0; i < 3; ++i)
     if (!std::isfinite(origin[i]) || !std::isfinite(direction[i])) return false;
   return direction[0] != 0 || direction[1] != 0 || direction[2] != 0;
 }
 
-int intersect_torus_checked(double major, double minor, const double origin[3], const double direction[3],
-                            double t[4]) {
+TOROID_HD int intersect_torus_checked(double major, double minor, const double origin[3], const double direction[3],
+                                      double t[4]) {
   if (!torus_radii_valid(major, minor)) return -1;
   if (!torus_ray_valid(origin, direction)) return 0;
   return intersect_torus(major, minor, origin, direction, t);
 }
 
-int intersect_torus_nearest_checked(double major, double minor, const double origin[3], const double direction[3],
-                                    double t_min, double t_max, double* t) {
+TOROID_HD int intersect_torus_nearest_checked(double major, double minor, const double origin[3],
+                                              const double direction[3], double t_min, double t_max, double* t) {
   if (!torus_radii_valid(major, minor)) return -1;
   if (!torus_ray_valid(origin, direction) || std::isnan(t_min) || std::isnan(t_max)) return 0;
   return intersect_torus_nearest(major, minor, origin, direction, t_min, t_max, t) ? 1 : 0;
 }
 
-void torus_unit_normal(double major, double minor, const double p[3], double n[3]) {
+TOROID_HD void torus_unit_normal(double major, double minor, const double p[3], double n[3]) {
   if (!torus_radii_valid(major, minor) || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
     n[0] = n[1] = n[2] = kNaN;
     return;
@@ -56,15 +56,20 @@ void torus_unit_normal(double major, double minor, const double p[3], double n[3
   for (int i = 0; i < 3; ++i) n[i] = m[i] / length;
 }
 
-long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,
-                                const double* directions, int* counts, double* roots) {
+TOROID_HD int intersect_torus_row(double major, double minor, const double origin[3], const double direction[3],
+                                  double row[4]) {
+  const int count = intersect_torus_checked(major, minor, origin, direction, row);
+  for (int k = std::max(count, 0); k < 4; ++k) row[k] = kNaN;
+  return count;
+}
+
+TOROID_HD long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,
+                                          const double* directions, int* counts, double* roots) {
   const bool radii = torus_radii_valid(major, minor);
   long long total = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    double* row = roots + 4 * i;
-    const int count = intersect_torus_checked(major, minor, origins + 3 * i, directions + 3 * i, row);
+    const int count = intersect_torus_row(major, minor, origins + 3 * i, directions + 3 * i, roots + 4 * i);
     counts[i] = count;
-    for (int k = std::max(count, 0); k < 4; ++k) row[k] = kNaN;
     total += std::max(count, 0);
   }
   return radii ? total : -1;

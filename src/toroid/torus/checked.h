@@ -12,23 +12,26 @@
 
 #include <cstddef>
 
+#include "toroid/math/device.h"
+
 namespace toroid {
 
 // major and minor finite and > 0.
-bool torus_radii_valid(double major, double minor);
+TOROID_HD bool torus_radii_valid(double major, double minor);
 
 // Every component of origin and direction finite, and direction not zero.
-bool torus_ray_valid(const double origin[3], const double direction[3]);
+TOROID_HD bool torus_ray_valid(const double origin[3], const double direction[3]);
 
 // -1 for invalid radii, 0 for an invalid ray, else intersect_torus's count
 // and roots (ascending). t is written only where a count > 0 says so.
-int intersect_torus_checked(double major, double minor, const double origin[3], const double direction[3], double t[4]);
+TOROID_HD int intersect_torus_checked(double major, double minor, const double origin[3], const double direction[3],
+                                      double t[4]);
 
 // -1 for invalid radii; 0 for an invalid ray, a NaN bound, or no root in
 // (t_min, t_max); 1 and *t, the nearest root in the interval, otherwise.
 // *t is written only when 1 is returned.
-int intersect_torus_nearest_checked(double major, double minor, const double origin[3], const double direction[3],
-                                    double t_min, double t_max, double* t);
+TOROID_HD int intersect_torus_nearest_checked(double major, double minor, const double origin[3],
+                                              const double direction[3], double t_min, double t_max, double* t);
 
 // torus_normal scaled to unit length. The scaling first divides by a power of
 // two near the largest component, which is exact, so that no square
@@ -36,7 +39,13 @@ int intersect_torus_nearest_checked(double major, double minor, const double ori
 // result is the same bits. NaN in every component for invalid radii, a
 // non-finite point, or a point where the normal is zero (the centre circle,
 // not on the surface).
-void torus_unit_normal(double major, double minor, const double p[3], double n[3]);
+TOROID_HD void torus_unit_normal(double major, double minor, const double p[3], double n[3]);
+
+// One row of intersect_torus_batch: intersect_torus_checked's count,
+// returned, and its roots in row[0..3], the slots beyond the count set to
+// NaN. The CPU batch and the CUDA kernel (cuda/) both call it per ray.
+TOROID_HD int intersect_torus_row(double major, double minor, const double origin[3], const double direction[3],
+                                  double row[4]);
 
 // intersect_torus_checked on each of n rays: ray i is origins[3i..3i+2],
 // directions[3i..3i+2]; its count goes to counts[i] and its roots to
@@ -45,7 +54,7 @@ void torus_unit_normal(double major, double minor, const double p[3], double n[3
 // bit. This is a scalar loop over the rays; a SIMD version is to keep the
 // same answers. Returns -1 for invalid radii, else the number of roots of
 // all the rays together (a long long: 4 n overflows an int for n > 2^29). n == 0 touches no array.
-long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,
-                                const double* directions, int* counts, double* roots);
+TOROID_HD long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,
+                                          const double* directions, int* counts, double* roots);
 
 }  // namespace toroid

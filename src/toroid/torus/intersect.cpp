@@ -48,7 +48,8 @@ struct Sample {
 // p(s) = origin + s * d. sign = -1 gives h_out, +1 gives h_in.
 class TorusFactor {
  public:
-  TorusFactor(const DoubleDouble o[3], const double d[3], double major, double minor, double sign)
+  [[gnu::always_inline]] TOROID_HD TorusFactor(const DoubleDouble o[3], const double d[3], double major, double minor,
+                                               double sign)
       : d_{d[0], d[1], d[2]}, R_(major), r_(minor), sign_(sign) {
     for (int i = 0; i < 3; ++i) {
       o_hi_[i] = o[i].hi;
@@ -60,17 +61,17 @@ class TorusFactor {
     K_ = cross * cross;
   }
 
-  double dd() const { return dd_; }
-  double major() const { return R_; }
-  bool is_outer() const { return sign_ < 0; }
-  double c() const { return c_; }
-  double K() const { return K_; }
+  TOROID_HD double dd() const { return dd_; }
+  TOROID_HD double major() const { return R_; }
+  TOROID_HD bool is_outer() const { return sign_ < 0; }
+  TOROID_HD double c() const { return c_; }
+  TOROID_HD double K() const { return K_; }
 
   // h and its derivatives at s. `side` picks the one-sided derivative of rho
   // where the ray crosses the axis (rho = 0): -1 from the left, +1 from the
   // right. h'' = 2|d|^2 + sign 2 R K / rho^3 and h''' = -3 (h'' - 2|d|^2) rho'/rho
   // cost no extra square root.
-  Sample sample(double s, double side = 1.0) const {
+  TOROID_HD Sample sample(double s, double side = 1.0) const {
     double p[3];
     for (int i = 0; i < 3; ++i) p[i] = o_hi_[i] + (s * d_[i] + o_lo_[i]);
     const double rho2 = p[0] * p[0] + p[1] * p[1];
@@ -86,7 +87,7 @@ class TorusFactor {
 
   // h at s in double-double arithmetic: used where double rounding would
   // decide the answer (near-tangent rays, whose two roots are ill-conditioned).
-  double eval_precise(double s) const {
+  TOROID_HD double eval_precise(double s) const {
     DoubleDouble p[3];
     for (int i = 0; i < 3; ++i) p[i] = dd_add({o_hi_[i], o_lo_[i]}, two_prod(s, d_[i]));
     const DoubleDouble rho = dd_sqrt(dd_add(dd_mul(p[0], p[0]), dd_mul(p[1], p[1])));
@@ -96,7 +97,7 @@ class TorusFactor {
     return h.hi + h.lo;
   }
 
-  double minor() const { return r_; }
+  TOROID_HD double minor() const { return r_; }
 
  private:
   double o_hi_[3], o_lo_[3];
@@ -107,7 +108,7 @@ class TorusFactor {
 
 // A first guess inside (lo, hi): Halley's step from `from` if it lands
 // inside, else Newton's, else the midpoint.
-double first_guess(const Sample& from, double lo, double hi) {
+TOROID_HD double first_guess(const Sample& from, double lo, double hi) {
   const double halley = from.s - 2 * from.h * from.dh / (2 * from.dh * from.dh - from.h * from.d2h);
   if (halley > lo && halley < hi) return halley;
   const double newton = from.s - from.h / from.dh;
@@ -121,14 +122,14 @@ double first_guess(const Sample& from, double lo, double hi) {
 // and falling then rising: none or two, decided by the tangents at the ends.
 class RootCollector {
  public:
-  RootCollector(const TorusFactor& f, double* out, double length_scale)
+  TOROID_HD RootCollector(const TorusFactor& f, double* out, double length_scale)
       : f_(f), out_(out), tol_root_(2 * kEps * length_scale), tol_extremum_(1e-10 * length_scale) {}
-  int count() const { return n_; }
+  TOROID_HD int count() const { return n_; }
 
   // Roots on the piece [a.s, b.s). A zero exactly at b.s counts only if `last`.
   // With `locate` false only whether there are roots matters (shadow rays):
   // a point of the piece stands for each root found, unrefined.
-  void piece(const Sample& a, const Sample& b, double sigma, bool last, bool locate = true) {
+  TOROID_HD void piece(const Sample& a, const Sample& b, double sigma, bool last, bool locate = true) {
     if (a.s == b.s) {  // a single point: the horn torus's centre
       if (a.h == 0) push(a.s);
       return;
@@ -154,7 +155,7 @@ class RootCollector {
   // tangents at the ends bound g from below; where they cross, either the
   // bound is positive (no root), or g is negative (a root on each side), or
   // g is positive and the piece shrinks to the side holding the minimum.
-  void two_or_none(Sample a, Sample b, double sigma, bool locate) {
+  TOROID_HD void two_or_none(Sample a, Sample b, double sigma, bool locate) {
     const double scale = f_.minor() * f_.minor();
     for (int it = 0; it < 8; ++it) {
       const double ga = sigma * a.h, gb = sigma * b.h, dga = sigma * a.dh, dgb = sigma * b.dh;
@@ -180,7 +181,7 @@ class RootCollector {
 
   // The minimum of g is within rounding of zero (a near-tangent ray): find
   // it by Newton on g' and decide its sign in double-double.
-  void near_tangent(const Sample& a, const Sample& b, double sigma, bool locate) {
+  TOROID_HD void near_tangent(const Sample& a, const Sample& b, double sigma, bool locate) {
     double x0 = (b.h - a.h + a.dh * a.s - b.dh * b.s) / (a.dh - b.dh);
     if (!(x0 > a.s && x0 < b.s)) x0 = 0.5 * (a.s + b.s);
     const double m = solve_monotone(
@@ -203,7 +204,7 @@ class RootCollector {
 
   // The root of h on (a.s, b.s), where h changes sign once; Newton starts
   // from `start`'s step, `lo_negative` tells the sign of h at a.s.
-  double root(const Sample& a, const Sample& b, const Sample& start, bool lo_negative, bool precise) {
+  TOROID_HD double root(const Sample& a, const Sample& b, const Sample& start, bool lo_negative, bool precise) {
     double lo = a.s, hi = b.s;
     double x = first_guess(start, lo, hi);
     const double tol = tol_root_ * 0.5 + 2 * kEps * std::abs(x);
@@ -241,7 +242,7 @@ class RootCollector {
     return x;
   }
 
-  void push(double s) {
+  TOROID_HD void push(double s) {
     if (n_ < 4) out_[n_++] = s;
   }
 
@@ -259,8 +260,8 @@ enum class Search { All, First, Any };
 // Roots of one factor inside the ball |p| <= radius, in the shifted frame,
 // ascending, restricted to [s_min, s_max]. Pieces wholly outside that window
 // are skipped; see Search.
-int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3], double radius, double s_min,
-                 double s_max, Search search, double* out) {
+TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3], double radius,
+                           double s_min, double s_max, Search search, double* out) {
   // Ball: dd s^2 + 2 b s + (|o|^2 - radius^2) = 0. The origin is the ray's
   // point nearest the centre, so b is ~0 and the chord is well conditioned.
   const double b = o[0].hi * d[0] + o[1].hi * d[1] + o[2].hi * d[2];
@@ -339,12 +340,15 @@ int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3
 }
 
 // The ray with its origin moved, exactly, to its point nearest the centre.
+// It and the TorusFactor constructor are always inlined, as solve_in_range
+// is, so that the common path makes no call.
 struct ShiftedRay {
   DoubleDouble o[3];
   double t_shift;
 };
 
-ShiftedRay shift_to_nearest_centre_point(const double origin[3], const double d[3]) {
+[[gnu::always_inline]] TOROID_HD inline ShiftedRay shift_to_nearest_centre_point(const double origin[3],
+                                                                                 const double d[3]) {
   const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   const double od = origin[0] * d[0] + origin[1] * d[1] + origin[2] * d[2];
   ShiftedRay r;
@@ -354,19 +358,20 @@ ShiftedRay shift_to_nearest_centre_point(const double origin[3], const double d[
   return r;
 }
 
-[[gnu::noinline, gnu::cold]] int solve_rescaled(double R, double r, const double origin[3], const double d[3],
-                                                double t_min, double t_max, Search search, double t[4]);
-
-// The default solver; writes roots as t values. A torus far from unit size would
-// underflow or overflow the factors' products (R^2, r^2, |p|^2), and a
-// direction far from unit length |d|^2 and the derivatives: then the
-// geometry (radii and origin) and the direction are each scaled by a power
-// of two, which is exact, and so is scaling t back (solve_rescaled).
-int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
-                  Search search, double t[4]) {
+// Whether the torus's size and |d|^2 lie in the range where the factors'
+// products (R^2, r^2, |p|^2, |d|^2 and the derivatives) neither underflow
+// nor overflow.
+TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
   const double size = R + r, dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-  if (!(size > 0x1p-100 && size < 0x1p100 && dd > 0x1p-400 && dd < 0x1p400))
-    return solve_rescaled(R, r, origin, d, t_min, t_max, search, t);
+  return size > 0x1p-100 && size < 0x1p100 && dd > 0x1p-400 && dd < 0x1p400;
+}
+
+// The default solver on a torus and direction in_solver_range; writes roots
+// as t values. Inlined into both callers, so that the common path is one
+// function, as it would be without solve_rescaled.
+[[gnu::always_inline]] TOROID_HD inline int solve_in_range(double R, double r, const double origin[3],
+                                                           const double d[3], double t_min, double t_max, Search search,
+                                                           double t[4]) {
   const ShiftedRay ray = shift_to_nearest_centre_point(origin, d);
   const double s_min = t_min - ray.t_shift, s_max = t_max - ray.t_shift;
   double s_out[4], s_in[4];
@@ -387,10 +392,10 @@ int solve_default(double R, double r, const double origin[3], const double d[3],
   return n;
 }
 
-// solve_default on a torus or a direction far from unit size: scaled by
+// solve_in_range on a torus or a direction far from unit size: scaled by
 // powers of two into the range, solved, and t scaled back.
-[[gnu::noinline, gnu::cold]] int solve_rescaled(double R, double r, const double origin[3], const double d[3],
-                                                double t_min, double t_max, Search search, double t[4]) {
+[[gnu::noinline, gnu::cold]] TOROID_HD int solve_rescaled(double R, double r, const double origin[3], const double d[3],
+                                                          double t_min, double t_max, Search search, double t[4]) {
   // The power of two to scale by: 0 within the range, or for 0, inf and NaN.
   const auto exponent_outside = [](double x, double lo, double hi) {
     return x > 0 && std::isfinite(x) && !(x > lo && x < hi) ? std::ilogb(x) : 0;
@@ -404,9 +409,12 @@ int solve_default(double R, double r, const double origin[3], const double d[3],
   const double d_s[3] = {std::scalbn(d[0], -j), std::scalbn(d[1], -j), std::scalbn(d[2], -j)};
   // An origin more than the largest double of torus sizes away sees nothing.
   if (!std::isfinite(o_s[0]) || !std::isfinite(o_s[1]) || !std::isfinite(o_s[2])) return 0;
+  // Scaled, the torus and the direction are in range, unless a radius or
+  // the direction holds a NaN or an infinity: no ray, no torus.
+  const double R_s = std::scalbn(R, -k), r_s = std::scalbn(r, -k);
+  if (!in_solver_range(R_s, r_s, d_s)) return 0;
   double found[4];
-  const int m = solve_default(std::scalbn(R, -k), std::scalbn(r, -k), o_s, d_s, std::scalbn(t_min, j - k),
-                              std::scalbn(t_max, j - k), search, found);
+  const int m = solve_in_range(R_s, r_s, o_s, d_s, std::scalbn(t_min, j - k), std::scalbn(t_max, j - k), search, found);
   // A root beyond the largest double (a tiny direction) is not representable: left out.
   int n = 0;
   for (int i = 0; i < m; ++i)
@@ -414,15 +422,27 @@ int solve_default(double R, double r, const double origin[3], const double d[3],
   return n;
 }
 
+// The default solver; writes roots as t values. A torus far from unit size
+// would underflow or overflow the factors' products, and a direction far
+// from unit length |d|^2 and the derivatives: then the geometry (radii and
+// origin) and the direction are each scaled by a power of two, which is
+// exact, and so is scaling t back (solve_rescaled). Not recursive, so that
+// the device's stack size is known.
+TOROID_HD int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
+                            Search search, double t[4]) {
+  if (!in_solver_range(R, r, d)) return solve_rescaled(R, r, origin, d, t_min, t_max, search, t);
+  return solve_in_range(R, r, origin, d, t_min, t_max, search, t);
+}
+
 // Sort a few values in place (insertion sort: at most four).
-void sort_small(double* v, int n) {
+TOROID_HD void sort_small(double* v, int n) {
   for (int i = 1; i < n; ++i)
     for (int j = i; j > 0 && v[j] < v[j - 1]; --j) std::swap(v[j], v[j - 1]);
 }
 
 }  // namespace
 
-void torus_quartic_coefficients(double R, double r, const double o[3], const double d[3], double coeffs[5]) {
+TOROID_HD void torus_quartic_coefficients(double R, double r, const double o[3], const double d[3], double coeffs[5]) {
   // |o + t d|^2 = alpha t^2 + 2 beta t + |o|^2, and gamma = |o|^2 + R^2 - r^2:
   // (alpha t^2 + 2 beta t + gamma)^2 = 4 R^2 ((ox + t dx)^2 + (oy + t dy)^2).
   const double alpha = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
@@ -436,8 +456,8 @@ void torus_quartic_coefficients(double R, double r, const double o[3], const dou
   coeffs[4] = gamma * gamma - four_r2 * (o[0] * o[0] + o[1] * o[1]);
 }
 
-int intersect_torus(double major, double minor, const double origin[3], const double direction[3], double t[4],
-                    TorusSolver solver) {
+TOROID_HD int intersect_torus(double major, double minor, const double origin[3], const double direction[3],
+                              double t[4], TorusSolver solver) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (solver == TorusSolver::Default)
     return solve_default(major, minor, origin, direction, -kInf, kInf, Search::All, t);
@@ -457,8 +477,8 @@ int intersect_torus(double major, double minor, const double origin[3], const do
 namespace {
 
 // The first root in (t_min, t_max), to the search's precision.
-bool first_root_in(double major, double minor, const double origin[3], const double direction[3], double t_min,
-                   double t_max, double* t, TorusSolver solver, Search search) {
+TOROID_HD bool first_root_in(double major, double minor, const double origin[3], const double direction[3],
+                             double t_min, double t_max, double* t, TorusSolver solver, Search search) {
   double roots[4];
   const int n = solver == TorusSolver::Default
                     ? solve_default(major, minor, origin, direction, t_min, t_max, search, roots)
@@ -473,13 +493,13 @@ bool first_root_in(double major, double minor, const double origin[3], const dou
 
 }  // namespace
 
-bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
-                             double t_min, double t_max, double* t, TorusSolver solver) {
+TOROID_HD bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
+                                       double t_min, double t_max, double* t, TorusSolver solver) {
   return first_root_in(major, minor, origin, direction, t_min, t_max, t, solver, Search::First);
 }
 
-bool torus_blocks(double major, double minor, const double origin[3], const double direction[3], double t_min,
-                  double t_max, TorusSolver solver) {
+TOROID_HD bool torus_blocks(double major, double minor, const double origin[3], const double direction[3], double t_min,
+                            double t_max, TorusSolver solver) {
   double t;
   return first_root_in(major, minor, origin, direction, t_min, t_max, &t, solver, Search::Any);
 }

@@ -21,6 +21,7 @@
 // return tube centres for the roots beside the axis.
 #pragma once
 
+#include "toroid/math/device.h"
 #include "toroid/torus/solver.h"
 
 namespace toroid {
@@ -40,25 +41,26 @@ inline constexpr double kTorusAxisClearance = 0x1p-20;
 // quartic is then (t - t0)^4): that point is listed twice, not four times.
 // `direction` need not be of unit length. Returns the count (0..4) written
 // to t.
-int intersect_torus(double major, double minor, const double origin[3], const double direction[3], double t[4],
-                    TorusSolver solver = TorusSolver::Default);
+TOROID_HD int intersect_torus(double major, double minor, const double origin[3], const double direction[3],
+                              double t[4], TorusSolver solver = TorusSolver::Default);
 
 // The nearest root in the open interval (t_min, t_max), as a renderer needs
 // it; same accuracy as intersect_torus, with an early exit. Returns false and
 // leaves *t unchanged when there is none.
-bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
-                             double t_min, double t_max, double* t, TorusSolver solver = TorusSolver::Default);
+TOROID_HD bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
+                                       double t_min, double t_max, double* t,
+                                       TorusSolver solver = TorusSolver::Default);
 
 // Whether some root lies in the open interval (t_min, t_max): the answer of
 // intersect_torus_nearest, for shadow rays, which need no root's position
 // (a root found on a stretch of the ray inside the interval is not refined).
-bool torus_blocks(double major, double minor, const double origin[3], const double direction[3], double t_min,
-                  double t_max, TorusSolver solver = TorusSolver::Default);
+TOROID_HD bool torus_blocks(double major, double minor, const double origin[3], const double direction[3], double t_min,
+                            double t_max, TorusSolver solver = TorusSolver::Default);
 
 // The quartic a t^4 + b t^3 + c t^2 + d t + e of the seed paper, formed
 // directly from the inputs (coeffs[0] = a ... coeffs[4] = e). The closed-form
 // solvers use it; the default solver does not (see docs/torus.md).
-void torus_quartic_coefficients(double major, double minor, const double origin[3], const double direction[3],
-                                double coeffs[5]);
+TOROID_HD void torus_quartic_coefficients(double major, double minor, const double origin[3], const double direction[3],
+                                          double coeffs[5]);
 
 }  // namespace toroid

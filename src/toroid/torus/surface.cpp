@@ -6,7 +6,7 @@
 
 namespace toroid {
 
-void torus_normal(double R, double r, const double p[3], double n[3]) {
+TOROID_HD void torus_normal(double R, double r, const double p[3], double n[3]) {
   const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
   if (rho == 0) {
     // An apex of a horn or spindle torus: the surface is a cone there; take
@@ -24,7 +24,7 @@ void torus_normal(double R, double r, const double p[3], double n[3]) {
   n[2] = p[2];
 }
 
-bool on_torus_lemon(double R, double r, const double p[3]) {
+TOROID_HD bool on_torus_lemon(double R, double r, const double p[3]) {
   if (r <= R) return false;
   const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
   const double a_out = rho - R, a_in = rho + R;
@@ -33,7 +33,7 @@ bool on_torus_lemon(double R, double r, const double p[3]) {
   return h_in < h_out;
 }
 
-void torus_angles(double R, double r, const double p[3], double* theta, double* phi) {
+TOROID_HD void torus_angles(double R, double r, const double p[3], double* theta, double* phi) {
   const double rho = std::sqrt(p[0] * p[0] + p[1] * p[1]);
   // Signed distance from the axis along the direction of the tube centre.
   const bool lemon = on_torus_lemon(R, r, p);
