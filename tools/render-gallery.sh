@@ -3,7 +3,7 @@
 # Renders the pictures of docs/gallery.md into docs/images, one core each,
 # and prints one line per picture: the command, toroid's own final line
 # (size, samples, threads, wall time, rays) and the CPU time (user + sys).
-# Usage: tools/render-gallery.sh [chapters|rtc|stress|tori|all]   (from the checkout root,
+# Usage: tools/render-gallery.sh [chapters|rtc|stress|tori|path|all]   (from the checkout root,
 # after building; the rtc pictures need ../shared/rtc-scenes or
 # TOROID_SHARED_DIR)
 set -euo pipefail
@@ -56,4 +56,10 @@ if [[ "$which" == tori || "$which" == all ]]; then
     render "$s.png" "scenes/$s.yaml" --samples 4
   done
   render bitten-doughnut.png scenes/bitten-doughnut.yaml --samples 16
+fi
+
+if [[ "$which" == path || "$which" == all ]]; then
+  # The path tracer's hero scene (its `- add: integrator` picks the path
+  # integrator); several minutes on one core.
+  render bagels-path.png scenes/bagels-path.yaml --samples 256
 fi
