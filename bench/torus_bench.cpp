@@ -3,7 +3,9 @@
 //   mixed:   rays from 2-6 sizes away aimed at random points of the torus's
 //            bounding box, hits and misses as a camera sees them;
 //   hits:    the subset of those rays that hit;
-//   nearest: the renderer's query, the nearest root in (0, inf), mixed set.
+//   nearest: the renderer's query, the nearest root in (0, inf), mixed set;
+//   blocks:  the shadow query, torus_blocks: whether a root lies in (0, inf),
+//            mixed set.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -80,6 +82,18 @@ void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver) {
   state.SetItemsProcessed(state.iterations());
 }
 
+void BM_Blocks(benchmark::State& state, toroid::TorusSolver solver) {
+  const auto& rs = rays(false);
+  size_t i = 0;
+  for (auto _ : state) {
+    const BenchRay& r = rs[i++ & (rs.size() - 1)];
+    benchmark::DoNotOptimize(
+        toroid::torus_blocks(kR, kr, r.o, r.d, 1e-9, std::numeric_limits<double>::infinity(), solver));
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 using toroid::TorusSolver;
 
 // The minimum over repetitions is what the code costs; the mean and median
@@ -96,5 +110,7 @@ TOROID_BENCH(BM_AllRoots, tianheng_hits, TorusSolver::Tianheng, true);
 TOROID_BENCH(BM_Nearest, default_mixed, TorusSolver::Default);
 TOROID_BENCH(BM_Nearest, ferrari_mixed, TorusSolver::Ferrari);
 TOROID_BENCH(BM_Nearest, tianheng_mixed, TorusSolver::Tianheng);
+TOROID_BENCH(BM_Blocks, default_mixed, TorusSolver::Default);
+TOROID_BENCH(BM_Blocks, ferrari_mixed, TorusSolver::Ferrari);
 
 }  // namespace

@@ -122,8 +122,17 @@ TOROID_HD double first_guess(const Sample& from, double lo, double hi) {
 // and falling then rising: none or two, decided by the tangents at the ends.
 class RootCollector {
  public:
-  TOROID_HD RootCollector(const TorusFactor& f, double* out, double length_scale)
-      : f_(f), out_(out), tol_root_(2 * kEps * length_scale), tol_extremum_(1e-10 * length_scale) {}
+  // With `first_only`, a pair whose first root lies inside (s_min, s_max)
+  // leaves its second root out: the search stops at the first anyway.
+  TOROID_HD RootCollector(const TorusFactor& f, double* out, double length_scale, bool first_only, double s_min,
+                          double s_max)
+      : f_(f),
+        out_(out),
+        tol_root_(2 * kEps * length_scale),
+        tol_extremum_(1e-10 * length_scale),
+        first_only_(first_only),
+        s_min_(s_min),
+        s_max_(s_max) {}
   TOROID_HD int count() const { return n_; }
 
   // Roots on the piece [a.s, b.s). A zero exactly at b.s counts only if `last`.
@@ -168,8 +177,19 @@ class RootCollector {
       // ill-conditioned in double (and g(m) >= the minimum): settle it precisely.
       if (std::abs(gm) < 1e-6 * scale) break;
       if (gm < 0) {
-        push(locate ? root(a, m, a, sigma < 0, false) : m.s);
-        push(locate ? root(m, b, b, sigma > 0, false) : m.s);
+        if (!locate) {
+          push(m.s);
+          if (!ends_search(m.s)) push(m.s);
+        } else if (first_only_) {
+          const double first = root(a, m, a, sigma < 0, false);
+          push(first);
+          if (!ends_search(first)) push(root(m, b, b, sigma > 0, false));
+        } else {
+          double first, second;
+          root_pair(a, m, b, sigma, &first, &second);
+          push(first);
+          push(second);
+        }
         return;
       }
       const double dgm = sigma * m.dh;
@@ -198,19 +218,61 @@ class RootCollector {
     }
     if (sigma * hm > 0) return;
     const Sample sm{m, hm, 0.0, 0.0, 0.0};
-    push(locate ? root(a, sm, a, sigma < 0, true) : m);
-    push(locate ? root(sm, b, b, sigma > 0, true) : m);
+    const double first = locate ? root(a, sm, a, sigma < 0, true) : m;
+    push(first);
+    if (!ends_search(first)) push(locate ? root(sm, b, b, sigma > 0, true) : m);
   }
+
+  TOROID_HD bool ends_search(double s) const { return first_only_ && s > s_min_ && s < s_max_; }
 
   // The root of h on (a.s, b.s), where h changes sign once; Newton starts
   // from `start`'s step, `lo_negative` tells the sign of h at a.s.
   TOROID_HD double root(const Sample& a, const Sample& b, const Sample& start, bool lo_negative, bool precise) {
-    double lo = a.s, hi = b.s;
-    double x = first_guess(start, lo, hi);
-    const double tol = tol_root_ * 0.5 + 2 * kEps * std::abs(x);
-    for (int it = 0; it < 100; ++it) {
-      const Sample v = f_.sample(x);
-      if (v.h == 0) break;
+    RootSearch search(a, b, start, lo_negative, tol_root_);
+    while (!search.done) search.step(f_, precise);
+    if (precise) {
+      // A close pair: the same iteration with the value in double-double,
+      // on the whole bracket (the double iteration's signs may be rounding).
+      return solve_monotone(
+          [&](double s) {
+            return std::pair<double, double>{f_.eval_precise(s), f_.sample(s).dh};
+          },
+          a.s, b.s, lo_negative, search.x, search.tol);
+    }
+    return search.x;
+  }
+
+  // The two roots of a pair, on (a.s, m.s) and (m.s, b.s): root() for each,
+  // their iterations interleaved so that the processor overlaps the two
+  // chains of dependent square roots and divisions. The same steps, so the
+  // same bits, as two calls of root().
+  TOROID_HD void root_pair(const Sample& a, const Sample& m, const Sample& b, double sigma, double* first,
+                           double* second) {
+    RootSearch left(a, m, a, sigma < 0, tol_root_), right(m, b, b, sigma > 0, tol_root_);
+    while (!left.done && !right.done) {
+      left.step(f_, false);
+      right.step(f_, false);
+    }
+    while (!left.done) left.step(f_, false);
+    while (!right.done) right.step(f_, false);
+    *first = left.x;
+    *second = right.x;
+  }
+
+  // Halley's iteration on a bracket where h changes sign once, one step at
+  // a time; `x` is the root once `done`.
+  struct RootSearch {
+    TOROID_HD RootSearch(const Sample& a, const Sample& b, const Sample& start, bool lo_is_negative, double tol_root)
+        : lo(a.s), hi(b.s), x(first_guess(start, a.s, b.s)), lo_negative(lo_is_negative) {
+      tol = tol_root * 0.5 + 2 * kEps * std::abs(x);
+    }
+
+    TOROID_HD void step(const TorusFactor& f, bool precise) {
+      const Sample v = f.sample(x);
+      if (v.h == 0) {
+        done = true;
+        return;
+      }
       ((v.h < 0) == lo_negative ? lo : hi) = x;
       // Halley's step: cubic convergence, with h'' and h''' free from sample().
       const double step = 2 * v.h * v.dh / (2 * v.dh * v.dh - v.h * v.d2h);
@@ -224,23 +286,22 @@ class RootCollector {
         const double c = std::abs(q * q - v.d3h / (6 * v.dh));
         // (c step^2 first: it is dimensionless, so nothing underflows on
         // tori of any size.)
-        if (c * (step * step) * std::abs(step) <= 0.25 * tol) return next;
+        if (c * (step * step) * std::abs(step) <= 0.25 * tol) {
+          x = next;
+          done = true;
+          return;
+        }
       }
       const double moved = std::abs(next - x);
       x = next;
-      if (moved <= tol || hi - lo <= tol) break;
+      done = moved <= tol || hi - lo <= tol || ++iterations == 100;
     }
-    if (precise) {
-      // A close pair: the same iteration with the value in double-double,
-      // on the whole bracket (the double iteration's signs may be rounding).
-      x = solve_monotone(
-          [&](double s) {
-            return std::pair<double, double>{f_.eval_precise(s), f_.sample(s).dh};
-          },
-          a.s, b.s, lo_negative, x, tol);
-    }
-    return x;
-  }
+
+    double lo, hi, x, tol;
+    bool lo_negative;
+    bool done = false;
+    int iterations = 0;
+  };
 
   TOROID_HD void push(double s) {
     if (n_ < 4) out_[n_++] = s;
@@ -249,6 +310,8 @@ class RootCollector {
   const TorusFactor& f_;
   double* out_;
   double tol_root_, tol_extremum_;
+  bool first_only_;
+  double s_min_, s_max_;
   int n_ = 0;
 };
 
@@ -317,7 +380,7 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   }
   cuts[ncut] = hi;
 
-  RootCollector collector(f, out, f.minor() / std::sqrt(f.dd()));
+  RootCollector collector(f, out, f.minor() / std::sqrt(f.dd()), search != Search::All, s_min, s_max);
   Sample start = f.sample(lo, +1.0);
   for (int i = 0; i < ncut; ++i) {
     // Each cut is sampled once and shared by the pieces on either side (from
