@@ -336,8 +336,12 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   const double w = std::sqrt(disc);
   double lo = (-b - w) / f.dd();
   double hi = (-b + w) / f.dd();
-  // The torus lies in the slab |z| <= r: clip the chord to it.
-  const double zo = o[2].hi + o[2].lo, slab = f.minor() * (1 + 1e-9) + 1e-300;
+  // The torus lies in the slab |z| <= r: clip the chord to it, inflated by
+  // 1e-9 r and by more than the rounding of z along the ray (a few eps |zo|),
+  // which is the larger for thin tubes seen from afar: a root just inside a
+  // face must stay inside the chord.
+  const double zo = o[2].hi + o[2].lo;
+  const double slab = std::max(f.minor() * (1 + 1e-9) + 1e-300, f.minor() + 8 * kEps * std::abs(zo));
   if (d[2] != 0) {
     double z_lo = (-slab - zo) / d[2], z_hi = (slab - zo) / d[2];
     if (z_lo > z_hi) std::swap(z_lo, z_hi);

@@ -181,6 +181,23 @@ TEST(TorusIntersect, ThinTubeIsFound) {
   EXPECT_NEAR(x.t[1], 4.0001, 1e-15);
 }
 
+// A thin tube (r/R = 7e-9) entered just below its top, from 2 sizes away:
+// the rounding of z along the ray (eps |z0|, 8e-9 r here) exceeded the slab's
+// 1e-9 r margin, the chord started inside the tube, and the entry root was
+// lost (a fuzz input: fuzz/corpus/intersect/thin-tube-top-entry).
+TEST(TorusIntersect, ThinTubeEnteredAtItsTopKeepsBothRoots) {
+  const double R = 0.0058671236038208008, r = 4.3655818380856221e-11;
+  const std::array<double, 3> o{8.5762085909497909e-21, 0.0078125000053432814, 0.0058671242150012404};
+  const std::array<double, 3> d{0.0058671236474766193, -0.0078125000053432814, -0.0058671242150012404};
+  const Roots x = roots(R, r, o, d);
+  ASSERT_EQ(x.n, 2);
+  for (int i = 0; i < 2; ++i) {
+    const double p[3] = {o[0] + x.t[i] * d[0], o[1] + x.t[i] * d[1], o[2] + x.t[i] * d[2]};
+    EXPECT_LT(std::abs(std::hypot(std::hypot(p[0], p[1]) - R, p[2]) - r), 1e-3 * r) << "root " << x.t[i];
+  }
+  EXPECT_LT(x.t[0], x.t[1]);
+}
+
 TEST(TorusIntersect, NearestRootInAnInterval) {
   const double o[3] = {-5, 0, 0}, d[3] = {1, 0, 0};
   double t = -1;
