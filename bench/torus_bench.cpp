@@ -5,15 +5,19 @@
 //   hits:    the subset of those rays that hit;
 //   nearest: the renderer's query, the nearest root in (0, inf), mixed set;
 //   blocks:  the shadow query, torus_blocks: whether a root lies in (0, inf),
-//            mixed set.
+//            mixed set;
+//   batch:   intersect_torus_batch_on each path (scalar, avx2, avx512) over
+//            the 4096 rays of a set: ns per ray, all roots.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <vector>
 
+#include "toroid/torus/batch.h"
 #include "toroid/torus/intersect.h"
 
 namespace {
@@ -94,6 +98,26 @@ void BM_Blocks(benchmark::State& state, toroid::TorusSolver solver) {
   state.SetItemsProcessed(state.iterations());
 }
 
+void BM_Batch(benchmark::State& state, toroid::BatchPath path, bool hits_only) {
+  if (!toroid::batch_path_available(path)) {
+    state.SkipWithError("this CPU or build has no such path");
+    return;
+  }
+  const auto& rs = rays(hits_only);
+  const std::size_t n = rs.size();
+  std::vector<double> origins(3 * n), directions(3 * n), roots(4 * n);
+  std::vector<int> counts(n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) origins[3 * i + k] = rs[i].o[k], directions[3 * i + k] = rs[i].d[k];
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(toroid::intersect_torus_batch_on(path, kR, kr, n, origins.data(), directions.data(),
+                                                              counts.data(), roots.data()));
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+}
+
+using toroid::BatchPath;
 using toroid::TorusSolver;
 
 // The minimum over repetitions is what the code costs; the mean and median
@@ -112,5 +136,11 @@ TOROID_BENCH(BM_Nearest, ferrari_mixed, TorusSolver::Ferrari);
 TOROID_BENCH(BM_Nearest, tianheng_mixed, TorusSolver::Tianheng);
 TOROID_BENCH(BM_Blocks, default_mixed, TorusSolver::Default);
 TOROID_BENCH(BM_Blocks, ferrari_mixed, TorusSolver::Ferrari);
+TOROID_BENCH(BM_Batch, scalar_mixed, BatchPath::Scalar, false);
+TOROID_BENCH(BM_Batch, avx2_mixed, BatchPath::Avx2, false);
+TOROID_BENCH(BM_Batch, avx512_mixed, BatchPath::Avx512, false);
+TOROID_BENCH(BM_Batch, scalar_hits, BatchPath::Scalar, true);
+TOROID_BENCH(BM_Batch, avx2_hits, BatchPath::Avx2, true);
+TOROID_BENCH(BM_Batch, avx512_hits, BatchPath::Avx512, true);
 
 }  // namespace

@@ -2,7 +2,8 @@
 // Fuzz target: the C API (toroid/torus_c.h) on any bits at all, every call.
 // Arrays are heap blocks of exactly the documented size, so AddressSanitizer
 // reports any read or write past them; each answer must be the documented
-// value for bad input and the C++ call's answer, bit for bit, otherwise.
+// value for bad input and the C++ call's answer, bit for bit, otherwise (the
+// batch on every path the CPU has).
 //
 // Input: a flags byte, a ray count byte, then doubles (little-endian bytes,
 // missing ones 0): major, minor, t_min, t_max, a point, then the rays'
@@ -19,6 +20,7 @@
 #include <memory>
 #include <vector>
 
+#include "toroid/torus/batch.h"
 #include "toroid/torus/checked.h"
 #include "toroid/torus_c.h"
 
@@ -110,17 +112,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::copy(x.begin() + 9 + 6 * i, x.begin() + 12 + 6 * i, origins.get() + 3 * i);
     std::copy(x.begin() + 12 + 6 * i, x.begin() + 15 + 6 * i, directions.get() + 3 * i);
   }
-  auto counts = block<int>(rays, 99);
-  auto roots = block<double>(4 * rays, kSentinel);
-  toroid_torus_intersect_batch(major, minor, rays, origins.get(), directions.get(), counts.get(), roots.get());
-  for (std::size_t i = 0; i < rays; ++i) {
-    double row[4] = {NAN, NAN, NAN, NAN};
-    const int want =
-        toroid::intersect_torus_checked(major, minor, origins.get() + 3 * i, directions.get() + 3 * i, row);
-    if (counts[i] != want) fail("batch: a count differs from the single call's");
-    for (int k = 0; k < 4; ++k) {
-      const double got = roots[4 * i + k];
-      if (k < want ? !same_bits(got, row[k]) : !std::isnan(got)) fail("batch: a root differs or a slot is not NaN");
+  // Through the C API (the widest path), then on every other path this CPU has.
+  const toroid::BatchPath paths[] = {toroid::BatchPath::Scalar, toroid::BatchPath::Avx2, toroid::BatchPath::Avx512};
+  for (int p = -1; p < 3; ++p) {
+    if (p >= 0 && !toroid::batch_path_available(paths[p])) continue;
+    auto counts = block<int>(rays, 99);
+    auto roots = block<double>(4 * rays, kSentinel);
+    if (p < 0)
+      toroid_torus_intersect_batch(major, minor, rays, origins.get(), directions.get(), counts.get(), roots.get());
+    else
+      toroid::intersect_torus_batch_on(paths[p], major, minor, rays, origins.get(), directions.get(), counts.get(),
+                                       roots.get());
+    for (std::size_t i = 0; i < rays; ++i) {
+      double row[4] = {NAN, NAN, NAN, NAN};
+      const int want =
+          toroid::intersect_torus_checked(major, minor, origins.get() + 3 * i, directions.get() + 3 * i, row);
+      if (counts[i] != want) fail("batch: a count differs from the single call's");
+      for (int k = 0; k < 4; ++k) {
+        const double got = roots[4 * i + k];
+        if (k < want ? !same_bits(got, row[k]) : !std::isnan(got)) fail("batch: a root differs or a slot is not NaN");
+      }
     }
   }
   return 0;

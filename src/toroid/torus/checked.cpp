@@ -63,16 +63,4 @@ TOROID_HD int intersect_torus_row(double major, double minor, const double origi
   return count;
 }
 
-TOROID_HD long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,
-                                          const double* directions, int* counts, double* roots) {
-  const bool radii = torus_radii_valid(major, minor);
-  long long total = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const int count = intersect_torus_row(major, minor, origins + 3 * i, directions + 3 * i, roots + 4 * i);
-    counts[i] = count;
-    total += std::max(count, 0);
-  }
-  return radii ? total : -1;
-}
-
 }  // namespace toroid

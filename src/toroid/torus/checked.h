@@ -43,7 +43,8 @@ TOROID_HD void torus_unit_normal(double major, double minor, const double p[3], 
 
 // One row of intersect_torus_batch: intersect_torus_checked's count,
 // returned, and its roots in row[0..3], the slots beyond the count set to
-// NaN. The CPU batch and the CUDA kernel (cuda/) both call it per ray.
+// NaN. The CPU batch (for the rays its SIMD paths leave to the scalar code)
+// and the CUDA kernel (cuda/) call it per ray.
 TOROID_HD int intersect_torus_row(double major, double minor, const double origin[3], const double direction[3],
                                   double row[4]);
 
@@ -51,10 +52,10 @@ TOROID_HD int intersect_torus_row(double major, double minor, const double origi
 // directions[3i..3i+2]; its count goes to counts[i] and its roots to
 // roots[4i..4i+3], the slots beyond its count set to NaN (so are all four of a
 // ray with count -1 or 0). Every row is the single-ray call's answer, bit for
-// bit. This is a scalar loop over the rays; a SIMD version is to keep the
-// same answers. Returns -1 for invalid radii, else the number of roots of
+// bit. It runs 4 or 8 rays at a time where the CPU allows (batch.h), one
+// at a time elsewhere, with the same answers. Returns -1 for invalid radii, else the number of roots of
 // all the rays together (a long long: 4 n overflows an int for n > 2^29). n == 0 touches no array.
-TOROID_HD long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,
-                                          const double* directions, int* counts, double* roots);
+long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,
+                                const double* directions, int* counts, double* roots);
 
 }  // namespace toroid

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: Apache-2.0
+// The batch call's code paths: intersect_torus_batch (checked.h) runs the
+// widest one this CPU has; tests and benchmarks pick one by name. Every path
+// gives every row the single-ray call's answer, bit for bit: the SIMD paths
+// run the default solver's common case on 4 or 8 rays at a time with the
+// same operations in the same order (no fused multiply-add where the scalar
+// code has none), and hand every ray that leaves that case (a near-tangent
+// pair, a ray through the axis, a spindle, an invalid ray, a torus or ray far
+// from unit size) to the scalar code.
+#pragma once
+
+#include <cstddef>
+
+namespace toroid {
+
+enum class BatchPath {
+  Scalar,  // one ray at a time, on any CPU
+  Avx2,    // 4 rays at a time, x86-64 with AVX2 and FMA
+  Avx512,  // 8 rays at a time, x86-64 with AVX-512F
+};
+
+// The path's name as the benchmarks print it: "scalar", "avx2", "avx512".
+const char* batch_path_name(BatchPath path);
+
+// Whether this build has the path and this CPU can run it.
+bool batch_path_available(BatchPath path);
+
+// The path intersect_torus_batch takes here: the widest available one.
+BatchPath batch_path_best();
+
+// intersect_torus_batch on the given path, which must be available.
+long long intersect_torus_batch_on(BatchPath path, double major, double minor, std::size_t n, const double* origins,
+                                   const double* directions, int* counts, double* roots);
+
+}  // namespace toroid

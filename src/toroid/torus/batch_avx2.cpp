@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: Apache-2.0
+// The batch's 4-wide path: batch_kernel.h on AVX2 vectors of four doubles.
+// Compiled with -mavx2 -mfma -ffp-contract=off (CMakeLists.txt), and called
+// only where the CPU has both (batch.cpp). fma() is the one fused operation:
+// it stands where the scalar code calls std::fma.
+#if TOROID_BATCH_X86_SIMD
+#include <immintrin.h>
+
+#include <cstddef>
+
+namespace toroid {
+namespace {
+
+constexpr int kWidth = 4;
+
+struct VD {
+  __m256d v;
+};
+struct VM {
+  __m256d m;
+};
+
+inline VD splat(double x) { return {_mm256_set1_pd(x)}; }
+inline VD load(const double* p) { return {_mm256_load_pd(p)}; }
+inline void store(double* p, VD a) { _mm256_store_pd(p, a.v); }
+inline VD operator+(VD a, VD b) { return {_mm256_add_pd(a.v, b.v)}; }
+inline VD operator-(VD a, VD b) { return {_mm256_sub_pd(a.v, b.v)}; }
+inline VD operator*(VD a, VD b) { return {_mm256_mul_pd(a.v, b.v)}; }
+inline VD operator/(VD a, VD b) { return {_mm256_div_pd(a.v, b.v)}; }
+inline VD operator-(VD a) { return {_mm256_xor_pd(a.v, _mm256_set1_pd(-0.0))}; }
+inline VD abs(VD a) { return {_mm256_andnot_pd(_mm256_set1_pd(-0.0), a.v)}; }
+inline VD sqrt(VD a) { return {_mm256_sqrt_pd(a.v)}; }
+inline VD fma(VD a, VD b, VD c) { return {_mm256_fmadd_pd(a.v, b.v, c.v)}; }
+inline VM operator<(VD a, VD b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_LT_OQ)}; }
+inline VM operator<=(VD a, VD b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)}; }
+inline VM operator>(VD a, VD b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_GT_OQ)}; }
+inline VM operator==(VD a, VD b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_EQ_OQ)}; }
+inline VM operator!=(VD a, VD b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_NEQ_UQ)}; }
+inline VM operator&(VM a, VM b) { return {_mm256_and_pd(a.m, b.m)}; }
+inline VM operator|(VM a, VM b) { return {_mm256_or_pd(a.m, b.m)}; }
+inline VM operator^(VM a, VM b) { return {_mm256_xor_pd(a.m, b.m)}; }
+inline VM operator~(VM a) { return {_mm256_xor_pd(a.m, _mm256_castsi256_pd(_mm256_set1_epi64x(-1)))}; }
+// m ? a : b, lane by lane.
+inline VD select(VM m, VD a, VD b) { return {_mm256_blendv_pd(b.v, a.v, m.m)}; }
+// Bit l set where lane l of m is set.
+inline unsigned bits(VM m) { return static_cast<unsigned>(_mm256_movemask_pd(m.m)); }
+
+}  // namespace
+}  // namespace toroid
+
+#define TOROID_BATCH_ENTRY intersect_torus_batch_avx2
+#include "toroid/torus/batch_kernel.h"
+#endif

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: Apache-2.0
+// The batch's 8-wide path: batch_kernel.h on AVX-512 vectors of eight
+// doubles. Compiled with -mavx512f -ffp-contract=off (CMakeLists.txt), and
+// called only where the CPU has AVX-512F (batch.cpp). fma() is the one fused
+// operation: it stands where the scalar code calls std::fma.
+#if TOROID_BATCH_X86_SIMD
+#include <immintrin.h>
+
+#include <cstddef>
+
+namespace toroid {
+namespace {
+
+constexpr int kWidth = 8;
+
+struct VD {
+  __m512d v;
+};
+struct VM {
+  __mmask8 m;
+};
+
+inline VD splat(double x) { return {_mm512_set1_pd(x)}; }
+inline VD load(const double* p) { return {_mm512_load_pd(p)}; }
+inline void store(double* p, VD a) { _mm512_store_pd(p, a.v); }
+inline VD operator+(VD a, VD b) { return {_mm512_add_pd(a.v, b.v)}; }
+inline VD operator-(VD a, VD b) { return {_mm512_sub_pd(a.v, b.v)}; }
+inline VD operator*(VD a, VD b) { return {_mm512_mul_pd(a.v, b.v)}; }
+inline VD operator/(VD a, VD b) { return {_mm512_div_pd(a.v, b.v)}; }
+inline VD operator-(VD a) {
+  return {_mm512_castsi512_pd(
+      _mm512_xor_si512(_mm512_castpd_si512(a.v), _mm512_set1_epi64(static_cast<long long>(0x8000000000000000ULL))))};
+}
+inline VD abs(VD a) { return {_mm512_abs_pd(a.v)}; }
+// (The zero-masked form: GCC 12 warns of the undefined vector that the plain
+// _mm512_sqrt_pd passes through.)
+inline VD sqrt(VD a) { return {_mm512_maskz_sqrt_pd(0xFF, a.v)}; }
+inline VD fma(VD a, VD b, VD c) { return {_mm512_fmadd_pd(a.v, b.v, c.v)}; }
+inline VM operator<(VD a, VD b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_LT_OQ)}; }
+inline VM operator<=(VD a, VD b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_LE_OQ)}; }
+inline VM operator>(VD a, VD b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_GT_OQ)}; }
+inline VM operator==(VD a, VD b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_EQ_OQ)}; }
+inline VM operator!=(VD a, VD b) { return {_mm512_cmp_pd_mask(a.v, b.v, _CMP_NEQ_UQ)}; }
+inline VM operator&(VM a, VM b) { return {static_cast<__mmask8>(a.m & b.m)}; }
+inline VM operator|(VM a, VM b) { return {static_cast<__mmask8>(a.m | b.m)}; }
+inline VM operator^(VM a, VM b) { return {static_cast<__mmask8>(a.m ^ b.m)}; }
+inline VM operator~(VM a) { return {static_cast<__mmask8>(~a.m)}; }
+// m ? a : b, lane by lane.
+inline VD select(VM m, VD a, VD b) { return {_mm512_mask_blend_pd(m.m, b.v, a.v)}; }
+// Bit l set where lane l of m is set.
+inline unsigned bits(VM m) { return m.m; }
+
+}  // namespace
+}  // namespace toroid
+
+#define TOROID_BATCH_ENTRY intersect_torus_batch_avx512
+#include "toroid/torus/batch_kernel.h"
+#endif

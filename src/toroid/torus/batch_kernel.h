@@ -1,0 +1,595 @@
+// SPDX-License-Identifier: Apache-2.0
+// The SIMD batch: the default solver's common case (intersect.cpp) on
+// kWidth rays at a time, included by batch_avx2.cpp and batch_avx512.cpp
+// after each defines its vector of doubles VD, its lane mask VM and their
+// operations, and TOROID_BATCH_ENTRY, the entry point's name. Everything
+// here has internal linkage, so the two instruction sets never share code.
+//
+// Every lane performs the scalar solver's operations in the scalar order,
+// so each root is the scalar root, bit for bit; intersect_torus_batch's tests
+// compare every row. A ray that leaves the common case goes to the scalar
+// code (intersect_torus_row), which answers it as the single-ray call does:
+// a spindle or horn torus, a torus or direction outside the solver's range,
+// an invalid ray, a ray through the axis, an exact zero of h at a cut, a
+// near-tangent pair.
+//
+// The rays of a chunk go through four stages, each on full vectors:
+//  1. the move to the point nearest the centre, and the chord inside the
+//     ball and the slab: most misses end here;
+//  2. the convexity cuts and h at every cut, and each piece's case: one
+//     root (a root search) or none-or-two (a pair search);
+//  3. the pair searches: where the end tangents cross, until the pair is
+//     split or shown empty;
+//  4. the root searches (Halley guarded by bisection); a lane whose search
+//     ends takes the next one, so that no lane idles while work is left.
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <memory>
+
+#include "toroid/torus/batch.h"
+#include "toroid/torus/checked.h"
+
+namespace toroid {
+namespace {
+
+constexpr double kBatchEps = std::numeric_limits<double>::epsilon();
+constexpr double kBatchNaN = std::numeric_limits<double>::quiet_NaN();
+// Rays per chunk: the stages' lists of a chunk stay in the first-level caches.
+constexpr int kChunk = 128;
+// Roots per piece (two) times pieces (at most three): a candidate's slots.
+constexpr int kSlots = 6;
+
+template <class F>
+inline void for_each_lane(unsigned lanes, F&& f) {
+  while (lanes != 0) {
+    f(__builtin_ctz(lanes));
+    lanes &= lanes - 1;
+  }
+}
+
+// The vector of values[index[l]] over the lanes l.
+inline VD gather(const double* values, const int* index) {
+  alignas(64) double lanes[kWidth];
+  for (int l = 0; l < kWidth; ++l) lanes[l] = values[index[l]];
+  return load(lanes);
+}
+
+struct SampleV {
+  VD s, h, dh, d2h, d3h;
+};
+
+// The outer factor h_out along the shifted ray, as TorusFactor holds it.
+struct FactorV {
+  VD oh[3], ol[3], d[3], dd, kc;  // kc = -2 R K
+};
+
+// The rays of a chunk that reach stage 2, by column.
+struct Candidates {
+  alignas(64) double oh[3][kChunk], ol[3][kChunk], d[3][kChunk];
+  alignas(64) double dd[kChunk], kc[kChunk], lo[kChunk], hi[kChunk], tol_root[kChunk], t_shift[kChunk];
+  int ray[kChunk];  // its index in the chunk
+  bool fallback[kChunk];
+  unsigned char found[kChunk];  // bit k: slot k holds a root
+  double roots[kChunk][kSlots];
+  int n;
+};
+
+// Brackets where h changes sign once, for stage 4.
+struct RootJobs {
+  static constexpr int kMax = kChunk * kSlots;
+  double lo[kMax], hi[kMax], x[kMax], tol[kMax];
+  bool lo_negative[kMax];
+  int candidate[kMax], slot[kMax];
+  int n;
+};
+
+// Pieces whose ends have g = sigma h > 0 and a minimum between, for stage 3.
+struct PairJobs {
+  static constexpr int kMax = kChunk * 3;
+  double a[4][kMax], b[4][kMax];  // s, h, h', h'' at each end
+  double sigma[kMax];
+  int candidate[kMax], slot[kMax];
+  int n;
+};
+
+struct Workspace {
+  Candidates cand;
+  RootJobs roots;
+  PairJobs pairs;
+  unsigned char state[kChunk];  // per ray of the chunk: kMiss, kCandidate or kFallback
+};
+constexpr unsigned char kMiss = 0, kCandidate = 1, kFallback = 2;
+
+class BatchSolver {
+ public:
+  BatchSolver(double major, double minor) : R_(major), r_(minor) {}
+
+  // Rays [0, m) of the chunk at origins, directions (m <= kChunk).
+  long long chunk(std::size_t m, const double* origins, const double* directions, int* counts, double* roots) {
+    ws_.cand.n = 0;
+    ws_.roots.n = 0;
+    ws_.pairs.n = 0;
+    for (std::size_t base = 0; base < m; base += kWidth) chords(base, m, origins, directions);
+    pad_candidates();
+    for (int base = 0; base < ws_.cand.n; base += kWidth) cuts(base);
+    pair_searches();
+    root_searches();
+    return write_rows(m, origins, directions, counts, roots);
+  }
+
+ private:
+  FactorV factor_at(int base) const {
+    const Candidates& c = ws_.cand;
+    FactorV f;
+    for (int k = 0; k < 3; ++k) {
+      f.oh[k] = load(&c.oh[k][base]);
+      f.ol[k] = load(&c.ol[k][base]);
+      f.d[k] = load(&c.d[k][base]);
+    }
+    f.dd = load(&c.dd[base]);
+    f.kc = load(&c.kc[base]);
+    return f;
+  }
+
+  FactorV factor_of(const int* candidate) const {
+    const Candidates& c = ws_.cand;
+    FactorV f;
+    for (int k = 0; k < 3; ++k) {
+      f.oh[k] = gather(c.oh[k], candidate);
+      f.ol[k] = gather(c.ol[k], candidate);
+      f.d[k] = gather(c.d[k], candidate);
+    }
+    f.dd = gather(c.dd, candidate);
+    f.kc = gather(c.kc, candidate);
+    return f;
+  }
+
+  // TorusFactor::sample for h_out; rho_zero marks the lanes where rho = 0,
+  // which the scalar code treats apart.
+  SampleV sample(const FactorV& f, VD s, VM* rho_zero) const {
+    VD p[3];
+    for (int k = 0; k < 3; ++k) p[k] = f.oh[k] + (s * f.d[k] + f.ol[k]);
+    const VD rho = sqrt(p[0] * p[0] + p[1] * p[1]);
+    const VD a = rho + splat(-R_);
+    const VD h = (a - splat(r_)) * (a + splat(r_)) + p[2] * p[2];
+    *rho_zero = rho == splat(0.0);
+    const VD inv_rho = splat(1.0) / rho;
+    const VD drho = (p[0] * f.d[0] + p[1] * f.d[1]) * inv_rho;
+    const VD k = f.kc * ((inv_rho * inv_rho) * inv_rho);
+    return {s, h, splat(2.0) * (a * drho + p[2] * f.d[2]), splat(2.0) * f.dd + k, ((splat(-3.0) * k) * drho) * inv_rho};
+  }
+
+  // first_guess of intersect.cpp.
+  static VD first_guess(const SampleV& from, VD lo, VD hi) {
+    const VD halley =
+        from.s - ((splat(2.0) * from.h) * from.dh) / ((splat(2.0) * from.dh) * from.dh - from.h * from.d2h);
+    const VD newton = from.s - from.h / from.dh;
+    const VM halley_inside = (halley > lo) & (halley < hi);
+    const VM newton_inside = (newton > lo) & (newton < hi);
+    return select(halley_inside, halley, select(newton_inside, newton, splat(0.5) * (lo + hi)));
+  }
+
+  // Queues, for the lanes in `lanes`, the root search on (lo, hi) that
+  // starts from `start`, as RootSearch's constructor sets it up.
+  void push_roots(unsigned lanes, const int* candidate, int slot_offset, const int* slot, const SampleV& start, VD lo,
+                  VD hi, VM lo_negative, VD tol_root) {
+    const VD x = first_guess(start, lo, hi);
+    const VD tol = tol_root * splat(0.5) + splat(2 * kBatchEps) * abs(x);
+    alignas(64) double lo_l[kWidth], hi_l[kWidth], x_l[kWidth], tol_l[kWidth];
+    store(lo_l, lo);
+    store(hi_l, hi);
+    store(x_l, x);
+    store(tol_l, tol);
+    const unsigned negative = bits(lo_negative);
+    RootJobs& q = ws_.roots;
+    for_each_lane(lanes, [&](int l) {
+      const int j = q.n++;
+      q.lo[j] = lo_l[l];
+      q.hi[j] = hi_l[l];
+      q.x[j] = x_l[l];
+      q.tol[j] = tol_l[l];
+      q.lo_negative[j] = (negative >> l) & 1;
+      q.candidate[j] = candidate[l];
+      q.slot[j] = slot[l] + slot_offset;
+    });
+  }
+
+  // Stage 1 on rays [base, base + kWidth) of the chunk (those below m).
+  void chords(std::size_t base, std::size_t m, const double* origins, const double* directions) {
+    alignas(64) double o_l[3][kWidth], d_l[3][kWidth];
+    unsigned live = 0;
+    for (int l = 0; l < kWidth; ++l) {
+      const std::size_t i = base + l < m ? base + l : base;
+      if (base + l < m) live |= 1u << l;
+      for (int k = 0; k < 3; ++k) o_l[k][l] = origins[3 * i + k], d_l[k][l] = directions[3 * i + k];
+    }
+    VD o[3], d[3];
+    VM finite = splat(0.0) == splat(0.0);
+    for (int k = 0; k < 3; ++k) {
+      o[k] = load(o_l[k]);
+      d[k] = load(d_l[k]);
+      finite = finite & (abs(o[k]) <= splat(std::numeric_limits<double>::max())) &
+               (abs(d[k]) <= splat(std::numeric_limits<double>::max()));
+    }
+    const VD zero = splat(0.0);
+    const VM has_direction = (d[0] != zero) | (d[1] != zero) | (d[2] != zero);
+    // shift_to_nearest_centre_point and in_solver_range.
+    const VD dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    const VM in_range = (dd > splat(0x1p-400)) & (dd < splat(0x1p400));
+    VM fallback = ~(finite & has_direction & in_range);
+    const VD od = o[0] * d[0] + o[1] * d[1] + o[2] * d[2];
+    const VD t_shift = -od / dd;
+    VD oh[3], ol[3];
+    for (int k = 0; k < 3; ++k) {  // add_scaled(origin, t_shift, d)
+      const VD p = t_shift * d[k];
+      const VD p_err = fma(t_shift, d[k], -p);
+      const VD s = o[k] + p;
+      const VD bb = s - o[k];
+      const VD s_lo = (o[k] - (s - bb)) + (p - bb);
+      const VD lo = s_lo + p_err;
+      oh[k] = s + lo;
+      ol[k] = lo - (oh[k] - s);
+    }
+    // factor_roots: the chord inside the ball of radius R + r, then the slab.
+    const VD b = oh[0] * d[0] + oh[1] * d[1] + oh[2] * d[2];
+    const VD oo = oh[0] * oh[0] + oh[1] * oh[1] + oh[2] * oh[2];
+    const double rad = (R_ + r_) * (1 + 1e-9) + 1e-300;
+    const VD disc = b * b - dd * (oo - splat(rad * rad));
+    VM miss = disc < zero;
+    const VD w = sqrt(disc);
+    VD lo = (-b - w) / dd;
+    VD hi = (-b + w) / dd;
+    const VD zo = oh[2] + ol[2];
+    const VD slab_face = splat(r_ * (1 + 1e-9) + 1e-300);
+    const VD slab_rounding = splat(r_) + splat(8 * kBatchEps) * abs(zo);
+    const VD slab = select(slab_face < slab_rounding, slab_rounding, slab_face);
+    const VM oblique = d[2] != zero;
+    VD z_lo = (-slab - zo) / d[2], z_hi = (slab - zo) / d[2];
+    const VM swap = z_lo > z_hi;
+    const VD z_first = select(swap, z_hi, z_lo), z_last = select(swap, z_lo, z_hi);
+    lo = select(oblique & (lo < z_first), z_first, lo);
+    hi = select(oblique & (z_last < hi), z_last, hi);
+    miss = miss | (~oblique & (abs(zo) > slab)) | (hi < lo);
+    // The tolerance of the roots, from RootCollector.
+    const VD tol_root = splat(2 * kBatchEps) * (splat(r_) / sqrt(dd));
+
+    const unsigned fallback_lanes = bits(fallback) & live;
+    const unsigned candidate_lanes = bits(~fallback & ~miss) & live;
+    for_each_lane(live, [&](int l) {
+      ws_.state[base + l] = (fallback_lanes >> l) & 1 ? kFallback : (candidate_lanes >> l) & 1 ? kCandidate : kMiss;
+    });
+    if (candidate_lanes == 0) return;
+    alignas(64) double oh_l[3][kWidth], ol_l[3][kWidth], dd_l[kWidth], lo_l[kWidth], hi_l[kWidth], tol_l[kWidth],
+        shift_l[kWidth];
+    for (int k = 0; k < 3; ++k) store(oh_l[k], oh[k]), store(ol_l[k], ol[k]);
+    store(dd_l, dd);
+    store(lo_l, lo);
+    store(hi_l, hi);
+    store(tol_l, tol_root);
+    store(shift_l, t_shift);
+    Candidates& c = ws_.cand;
+    for_each_lane(candidate_lanes, [&](int l) {
+      const int j = c.n++;
+      for (int k = 0; k < 3; ++k) c.oh[k][j] = oh_l[k][l], c.ol[k][j] = ol_l[k][l], c.d[k][j] = d_l[k][l];
+      c.dd[j] = dd_l[l];
+      c.kc[j] = 0;  // set in stage 2
+      c.lo[j] = lo_l[l];
+      c.hi[j] = hi_l[l];
+      c.tol_root[j] = tol_l[l];
+      c.t_shift[j] = shift_l[l];
+      c.ray[j] = static_cast<int>(base + l);
+      c.fallback[j] = false;
+      c.found[j] = 0;
+    });
+  }
+
+  // Fills the candidates' columns up to a whole vector with copies of the
+  // first, so that stage 2's last vector reads real rays.
+  void pad_candidates() {
+    Candidates& c = ws_.cand;
+    if (c.n == 0) return;
+    for (int j = c.n; j % kWidth != 0; ++j) {
+      for (int k = 0; k < 3; ++k) c.oh[k][j] = c.oh[k][0], c.ol[k][j] = c.ol[k][0], c.d[k][j] = c.d[k][0];
+      c.dd[j] = c.dd[0];
+      c.kc[j] = 0;
+      c.lo[j] = c.lo[0];
+      c.hi[j] = c.hi[0];
+      c.tol_root[j] = c.tol_root[0];
+    }
+  }
+
+  // Stage 2 on candidates [base, base + kWidth).
+  void cuts(int base) {
+    Candidates& c = ws_.cand;
+    unsigned live = 0;
+    int candidate[kWidth], zero_slot[kWidth] = {};
+    for (int l = 0; l < kWidth; ++l) {
+      candidate[l] = base + l;
+      if (base + l < c.n) live |= 1u << l;
+    }
+    FactorV f = factor_at(base);
+    const VD zero = splat(0.0);
+    const VD lo = load(&c.lo[base]), hi = load(&c.hi[base]);
+    // The TorusFactor's constants, and factor_roots's convexity cuts.
+    const VD cc = f.d[0] * f.d[0] + f.d[1] * f.d[1];
+    const VD cross = f.oh[0] * f.d[1] - f.oh[1] * f.d[0];
+    const VD K = cross * cross;
+    f.kc = splat(-2.0 * R_) * K;
+    store(&c.kc[base], f.kc);
+    const VM not_vertical = cc > zero;
+    VM fallback = not_vertical & (K == zero);  // a ray through the axis
+    const VD s_axis = -(f.oh[0] * f.d[0] + f.oh[1] * f.d[1]) / cc;
+    const VD rho_i3 = (splat(R_) * K) / f.dd, rho_min2 = K / cc;
+    const VD square = rho_i3 * rho_i3;
+    const VM has_concave = not_vertical & (K != zero) & (square > (rho_min2 * rho_min2) * rho_min2);
+    // Where the square and cube underflow, the scalar code decides with
+    // cube roots: those rays go to it.
+    fallback = fallback | (not_vertical & (K != zero) & ~has_concave & (square < splat(0x1p-1000)));
+    const unsigned concave_lanes = bits(has_concave) & live;
+    VD concave_lo = zero, concave_hi = zero;
+    VM cut_lo = splat(1.0) == zero, cut_hi = cut_lo;
+    if (concave_lanes != 0) {
+      alignas(64) double cube_root[kWidth] = {}, rho_i3_l[kWidth];
+      store(rho_i3_l, rho_i3);
+      for_each_lane(concave_lanes, [&](int l) { cube_root[l] = std::cbrt(rho_i3_l[l]); });
+      const VD rho_i = load(cube_root);
+      const VD excess = rho_i * rho_i - rho_min2;
+      const VD hw = sqrt(select(zero < excess, excess, zero) / cc);
+      concave_lo = select(has_concave, s_axis - hw, zero);
+      concave_hi = select(has_concave, s_axis + hw, zero);
+      cut_lo = has_concave & (concave_lo > lo) & (concave_lo < hi);
+      cut_hi = has_concave & (concave_hi > lo) & (concave_hi < hi);
+    }
+    // The cuts in order, hi repeated where a lane has fewer.
+    const VD at[4] = {lo, select(cut_lo, concave_lo, select(cut_hi, concave_hi, hi)),
+                      select(cut_lo & cut_hi, concave_hi, hi), hi};
+    const VM pieces[3] = {splat(0.0) == zero, cut_lo | cut_hi, cut_lo & cut_hi};
+    const int n_pieces = bits(pieces[2]) & live ? 3 : bits(pieces[1]) & live ? 2 : 1;
+    SampleV s[4];
+    for (int i = 0; i <= n_pieces; ++i) {
+      VM rho_zero;
+      s[i] = sample(f, at[i], &rho_zero);
+      // rho = 0 or an exact zero at a cut: the scalar code's special cases.
+      const VM used = i == 0 ? pieces[0] : pieces[i - 1];
+      fallback = fallback | (used & (rho_zero | (s[i].h == zero)));
+    }
+    for (int i = 0; i < n_pieces; ++i) fallback = fallback | (pieces[i] & (at[i] == at[i + 1]));
+    const unsigned fallback_lanes = bits(fallback) & live;
+    for_each_lane(fallback_lanes, [&](int l) { c.fallback[base + l] = true; });
+
+    const VD tol_root = load(&c.tol_root[base]);
+    for (int i = 0; i < n_pieces; ++i) {
+      const unsigned lanes = bits(pieces[i]) & live & ~fallback_lanes;
+      if (lanes == 0) continue;
+      const SampleV& a = s[i];
+      const SampleV& b = s[i + 1];
+      const VD mid = splat(0.5) * (a.s + b.s);
+      const VM concave = (mid > concave_lo) & (mid < concave_hi);
+      const VD sigma = select(concave, splat(-1.0), splat(1.0));
+      const VM pos_a = sigma * a.h > zero, pos_b = sigma * b.h > zero;
+      const VM one = pos_a ^ pos_b;
+      const unsigned one_lanes = bits(one) & lanes;
+      if (one_lanes != 0) {
+        SampleV start;
+        start.s = select(pos_a, a.s, b.s);
+        start.h = select(pos_a, a.h, b.h);
+        start.dh = select(pos_a, a.dh, b.dh);
+        start.d2h = select(pos_a, a.d2h, b.d2h);
+        const VM lo_negative = ~(pos_a ^ concave);  // pos_a == (sigma < 0)
+        push_roots(one_lanes, candidate, 2 * i, zero_slot, start, a.s, b.s, lo_negative, tol_root);
+      }
+      const unsigned pair_lanes =
+          bits(~one & pos_a & (sigma * a.dh < zero) & (sigma * b.dh > zero)) & lanes & ~one_lanes;
+      if (pair_lanes != 0) push_pairs(pair_lanes, candidate, 2 * i, a, b, sigma);
+    }
+  }
+
+  void push_pairs(unsigned lanes, const int* candidate, int slot, const SampleV& a, const SampleV& b, VD sigma) {
+    alignas(64) double a_l[4][kWidth], b_l[4][kWidth], sigma_l[kWidth];
+    const VD a_v[4] = {a.s, a.h, a.dh, a.d2h}, b_v[4] = {b.s, b.h, b.dh, b.d2h};
+    for (int k = 0; k < 4; ++k) store(a_l[k], a_v[k]), store(b_l[k], b_v[k]);
+    store(sigma_l, sigma);
+    PairJobs& q = ws_.pairs;
+    for_each_lane(lanes, [&](int l) {
+      const int j = q.n++;
+      for (int k = 0; k < 4; ++k) q.a[k][j] = a_l[k][l], q.b[k][j] = b_l[k][l];
+      q.sigma[j] = sigma_l[l];
+      q.candidate[j] = candidate[l];
+      q.slot[j] = slot;
+    });
+  }
+
+  // Stage 3: RootCollector::two_or_none on kWidth pairs at a time. A pair
+  // whose minimum comes within 1e-6 r^2 of zero, or that is not split in 8
+  // steps, is a near-tangent pair: its ray goes to the scalar code.
+  void pair_searches() {
+    PairJobs& q = ws_.pairs;
+    const VD zero = splat(0.0);
+    const VD near_tangent = splat(1e-6 * (r_ * r_));
+    for (int base = 0; base < q.n; base += kWidth) {
+      unsigned active = 0;
+      int job[kWidth], candidate[kWidth], slot[kWidth];
+      for (int l = 0; l < kWidth; ++l) {
+        job[l] = base + l < q.n ? base + l : base;
+        if (base + l < q.n) active |= 1u << l;
+        candidate[l] = q.candidate[job[l]];
+        slot[l] = q.slot[job[l]];
+      }
+      const FactorV f = factor_of(candidate);
+      const VD tol_root = gather(ws_.cand.tol_root, candidate);
+      const VD sigma = gather(q.sigma, job);
+      SampleV a{gather(q.a[0], job), gather(q.a[1], job), gather(q.a[2], job), gather(q.a[3], job), zero};
+      SampleV b{gather(q.b[0], job), gather(q.b[1], job), gather(q.b[2], job), gather(q.b[3], job), zero};
+      for (int it = 0; it < 8 && active != 0; ++it) {
+        const VD ga = sigma * a.h, gb = sigma * b.h, dga = sigma * a.dh, dgb = sigma * b.dh;
+        VD x = (((gb - ga) + dga * a.s) - dgb * b.s) / (dga - dgb);
+        x = select((x > a.s) & (x < b.s), x, splat(0.5) * (a.s + b.s));
+        active &= ~bits(ga + dga * (x - a.s) > zero);  // the lower bound stays positive: none
+        if (active == 0) break;
+        VM rho_zero;
+        const SampleV m = sample(f, x, &rho_zero);
+        const VD gm = sigma * m.h;
+        const unsigned to_scalar = bits(rho_zero | (abs(gm) < near_tangent)) & active;
+        for_each_lane(to_scalar, [&](int l) { ws_.cand.fallback[candidate[l]] = true; });
+        active &= ~to_scalar;
+        const unsigned split = bits(gm < zero) & active;
+        if (split != 0) {
+          push_roots(split, candidate, 0, slot, a, a.s, m.s, sigma < zero, tol_root);
+          push_roots(split, candidate, 1, slot, b, m.s, b.s, sigma > zero, tol_root);
+        }
+        active &= ~split;
+        const VD dgm = sigma * m.dh;
+        active &= ~bits(dgm == zero);  // the minimum, and it is positive: none
+        const VM left = dgm < zero;
+        a = {select(left, m.s, a.s), select(left, m.h, a.h), select(left, m.dh, a.dh), select(left, m.d2h, a.d2h),
+             zero};
+        b = {select(left, b.s, m.s), select(left, b.h, m.h), select(left, b.dh, m.dh), select(left, b.d2h, m.d2h),
+             zero};
+      }
+      for_each_lane(active, [&](int l) { ws_.cand.fallback[candidate[l]] = true; });
+    }
+  }
+
+  // Stage 4: RootSearch::step on kWidth searches at a time, each lane taking
+  // the next search as soon as its own ends.
+  void root_searches() {
+    RootJobs& q = ws_.roots;
+    Candidates& c = ws_.cand;
+    alignas(64) double lo_l[kWidth], hi_l[kWidth], x_l[kWidth], tol_l[kWidth], neg_l[kWidth], it_l[kWidth];
+    alignas(64) double oh_l[3][kWidth], ol_l[3][kWidth], d_l[3][kWidth], dd_l[kWidth], kc_l[kWidth];
+    int job[kWidth];
+    int next = 0;
+    unsigned busy = 0;
+    const auto take = [&](int l) {
+      if (next == q.n) {
+        busy &= ~(1u << l);
+        return;
+      }
+      const int j = next++;
+      job[l] = j;
+      busy |= 1u << l;
+      lo_l[l] = q.lo[j];
+      hi_l[l] = q.hi[j];
+      x_l[l] = q.x[j];
+      tol_l[l] = q.tol[j];
+      neg_l[l] = q.lo_negative[j] ? 1.0 : 0.0;
+      it_l[l] = 0;
+      const int k = q.candidate[j];
+      for (int i = 0; i < 3; ++i) oh_l[i][l] = c.oh[i][k], ol_l[i][l] = c.ol[i][k], d_l[i][l] = c.d[i][k];
+      dd_l[l] = c.dd[k];
+      kc_l[l] = c.kc[k];
+    };
+    for (int l = 0; l < kWidth; ++l) take(l);
+    if (busy == 0) return;
+    // Idle lanes keep a copy of a busy one, so that they compute on real values.
+    const auto fill_idle = [&]() {
+      const int from = __builtin_ctz(busy);
+      for_each_lane(~busy & ((1u << kWidth) - 1), [&](int l) {
+        lo_l[l] = lo_l[from], hi_l[l] = hi_l[from], x_l[l] = x_l[from], tol_l[l] = tol_l[from];
+        neg_l[l] = neg_l[from], it_l[l] = it_l[from];
+        for (int i = 0; i < 3; ++i) oh_l[i][l] = oh_l[i][from], ol_l[i][l] = ol_l[i][from], d_l[i][l] = d_l[i][from];
+        dd_l[l] = dd_l[from], kc_l[l] = kc_l[from];
+      });
+    };
+    fill_idle();
+    const VD zero = splat(0.0);
+    while (busy != 0) {
+      FactorV f;
+      for (int i = 0; i < 3; ++i) f.oh[i] = load(oh_l[i]), f.ol[i] = load(ol_l[i]), f.d[i] = load(d_l[i]);
+      f.dd = load(dd_l);
+      f.kc = load(kc_l);
+      VD lo = load(lo_l), hi = load(hi_l), x = load(x_l);
+      const VD tol = load(tol_l);
+      VM rho_zero;
+      const SampleV v = sample(f, x, &rho_zero);
+      const VM root_hit = v.h == zero;
+      const VM lo_negative = load(neg_l) != zero;
+      const VM to_lo = ~((v.h < zero) ^ lo_negative);
+      lo = select(to_lo, x, lo);
+      hi = select(to_lo, hi, x);
+      const VD step = ((splat(2.0) * v.h) * v.dh) / ((splat(2.0) * v.dh) * v.dh - v.h * v.d2h);
+      VD next_x = x - step;
+      const VM inside = (next_x > lo) & (next_x < hi);
+      next_x = select(inside, next_x, splat(0.5) * (lo + hi));
+      const VD qv = v.d2h / (splat(2.0) * v.dh);
+      const VD cv = abs(qv * qv - v.d3h / (splat(6.0) * v.dh));
+      const VM converged = inside & ((cv * (step * step)) * abs(step) <= splat(0.25) * tol);
+      const VD moved = abs(next_x - x);
+      const VD iterations = load(it_l) + splat(1.0);
+      const VM done = root_hit | converged | (moved <= tol) | (hi - lo <= tol) | (iterations == splat(100.0));
+      store(lo_l, select(root_hit, load(lo_l), lo));
+      store(hi_l, select(root_hit, load(hi_l), hi));
+      store(x_l, select(root_hit, x, next_x));
+      store(it_l, iterations);
+      const unsigned to_scalar = bits(rho_zero) & busy;
+      const unsigned finished = (bits(done) & busy) | to_scalar;
+      if (finished == 0) continue;
+      for_each_lane(finished, [&](int l) {
+        const int j = job[l], k = q.candidate[j];
+        if ((to_scalar >> l) & 1) {
+          c.fallback[k] = true;
+        } else {
+          c.roots[k][q.slot[j]] = x_l[l];
+          c.found[k] |= 1u << q.slot[j];
+        }
+        take(l);
+      });
+      if (busy != 0) fill_idle();
+    }
+  }
+
+  // The chunk's rows: the candidates' roots in slot order (the scalar code's
+  // push order), the rest from the scalar code or empty.
+  long long write_rows(std::size_t m, const double* origins, const double* directions, int* counts, double* roots) {
+    const Candidates& c = ws_.cand;
+    long long total = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      if (ws_.state[i] == kMiss) {
+        counts[i] = 0;
+        for (int k = 0; k < 4; ++k) roots[4 * i + k] = kBatchNaN;
+      } else if (ws_.state[i] == kFallback) {
+        counts[i] = intersect_torus_row(R_, r_, origins + 3 * i, directions + 3 * i, roots + 4 * i);
+        total += counts[i];
+      }
+    }
+    for (int j = 0; j < c.n; ++j) {
+      const int i = c.ray[j];
+      double* row = roots + 4 * i;
+      int n = 0;
+      if (c.fallback[j]) {
+        n = intersect_torus_row(R_, r_, origins + 3 * i, directions + 3 * i, row);
+      } else {
+        for (int k = 0; k < kSlots && n < 4; ++k)
+          if ((c.found[j] >> k) & 1) row[n++] = c.t_shift[j] + c.roots[j][k];
+        for (int k = n; k < 4; ++k) row[k] = kBatchNaN;
+      }
+      counts[i] = n;
+      total += n;
+    }
+    return total;
+  }
+
+  double R_, r_;
+  Workspace ws_;
+};
+
+}  // namespace
+
+long long TOROID_BATCH_ENTRY(double major, double minor, std::size_t n, const double* origins, const double* directions,
+                             int* counts, double* roots) {
+  // The common case is a ring torus (minor < major) of a size the solver
+  // takes unscaled; any other torus is the scalar code's throughout.
+  const double size = major + minor;
+  if (!torus_radii_valid(major, minor) || !(minor < major) || !(size > 0x1p-100 && size < 0x1p100))
+    return intersect_torus_batch_on(BatchPath::Scalar, major, minor, n, origins, directions, counts, roots);
+  const auto solver = std::make_unique<BatchSolver>(major, minor);
+  long long total = 0;
+  for (std::size_t base = 0; base < n; base += kChunk) {
+    const std::size_t m = n - base < static_cast<std::size_t>(kChunk) ? n - base : kChunk;
+    total += solver->chunk(m, origins + 3 * base, directions + 3 * base, counts + base, roots + 4 * base);
+  }
+  return total;
+}
+
+}  // namespace toroid
