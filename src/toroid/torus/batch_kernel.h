@@ -451,14 +451,17 @@ class BatchSolver {
     }
   }
 
-  // Stage 4: RootSearch::step on kWidth searches at a time, each lane taking
+  // Stage 4: RootSearch::step on kGroups vectors of searches at a time (the
+  // groups' chains of square roots and divisions overlap), each lane taking
   // the next search as soon as its own ends.
   void root_searches() {
+    constexpr int kGroups = 2, kLanes = kGroups * kWidth;
+    constexpr unsigned kAll = (1u << kLanes) - 1, kGroupLanes = (1u << kWidth) - 1;
     RootJobs& q = ws_.roots;
     Candidates& c = ws_.cand;
-    alignas(64) double lo_l[kWidth], hi_l[kWidth], x_l[kWidth], tol_l[kWidth], neg_l[kWidth], it_l[kWidth];
-    alignas(64) double oh_l[3][kWidth], ol_l[3][kWidth], d_l[3][kWidth], dd_l[kWidth], kc_l[kWidth];
-    int job[kWidth];
+    alignas(64) double lo_l[kLanes], hi_l[kLanes], x_l[kLanes], tol_l[kLanes], neg_l[kLanes], it_l[kLanes];
+    alignas(64) double oh_l[3][kLanes], ol_l[3][kLanes], d_l[3][kLanes], dd_l[kLanes], kc_l[kLanes];
+    int job[kLanes];
     int next = 0;
     unsigned busy = 0;
     const auto take = [&](int l) {
@@ -480,12 +483,12 @@ class BatchSolver {
       dd_l[l] = c.dd[k];
       kc_l[l] = c.kc[k];
     };
-    for (int l = 0; l < kWidth; ++l) take(l);
+    for (int l = 0; l < kLanes; ++l) take(l);
     if (busy == 0) return;
     // Idle lanes keep a copy of a busy one, so that they compute on real values.
     const auto fill_idle = [&]() {
       const int from = __builtin_ctz(busy);
-      for_each_lane(~busy & ((1u << kWidth) - 1), [&](int l) {
+      for_each_lane(~busy & kAll, [&](int l) {
         lo_l[l] = lo_l[from], hi_l[l] = hi_l[from], x_l[l] = x_l[from], tol_l[l] = tol_l[from];
         neg_l[l] = neg_l[from], it_l[l] = it_l[from];
         for (int i = 0; i < 3; ++i) oh_l[i][l] = oh_l[i][from], ol_l[i][l] = ol_l[i][from], d_l[i][l] = d_l[i][from];
@@ -495,35 +498,42 @@ class BatchSolver {
     fill_idle();
     const VD zero = splat(0.0);
     while (busy != 0) {
-      FactorV f;
-      for (int i = 0; i < 3; ++i) f.oh[i] = load(oh_l[i]), f.ol[i] = load(ol_l[i]), f.d[i] = load(d_l[i]);
-      f.dd = load(dd_l);
-      f.kc = load(kc_l);
-      VD lo = load(lo_l), hi = load(hi_l), x = load(x_l);
-      const VD tol = load(tol_l);
-      VM rho_zero;
-      const SampleV v = sample(f, x, &rho_zero);
-      const VM root_hit = v.h == zero;
-      const VM lo_negative = load(neg_l) != zero;
-      const VM to_lo = ~((v.h < zero) ^ lo_negative);
-      lo = select(to_lo, x, lo);
-      hi = select(to_lo, hi, x);
-      const VD step = ((splat(2.0) * v.h) * v.dh) / ((splat(2.0) * v.dh) * v.dh - v.h * v.d2h);
-      VD next_x = x - step;
-      const VM inside = (next_x > lo) & (next_x < hi);
-      next_x = select(inside, next_x, splat(0.5) * (lo + hi));
-      const VD qv = v.d2h / (splat(2.0) * v.dh);
-      const VD cv = abs(qv * qv - v.d3h / (splat(6.0) * v.dh));
-      const VM converged = inside & ((cv * (step * step)) * abs(step) <= splat(0.25) * tol);
-      const VD moved = abs(next_x - x);
-      const VD iterations = load(it_l) + splat(1.0);
-      const VM done = root_hit | converged | (moved <= tol) | (hi - lo <= tol) | (iterations == splat(100.0));
-      store(lo_l, select(root_hit, load(lo_l), lo));
-      store(hi_l, select(root_hit, load(hi_l), hi));
-      store(x_l, select(root_hit, x, next_x));
-      store(it_l, iterations);
-      const unsigned to_scalar = bits(rho_zero) & busy;
-      const unsigned finished = (bits(done) & busy) | to_scalar;
+      unsigned finished = 0, to_scalar = 0;
+      for (int g = 0; g < kGroups; ++g) {
+        const int o = g * kWidth;
+        if (((busy >> o) & kGroupLanes) == 0) continue;
+        FactorV f;
+        for (int i = 0; i < 3; ++i) f.oh[i] = load(oh_l[i] + o), f.ol[i] = load(ol_l[i] + o), f.d[i] = load(d_l[i] + o);
+        f.dd = load(dd_l + o);
+        f.kc = load(kc_l + o);
+        VD lo = load(lo_l + o), hi = load(hi_l + o), x = load(x_l + o);
+        const VD tol = load(tol_l + o);
+        VM rho_zero;
+        const SampleV v = sample(f, x, &rho_zero);
+        const VM root_hit = v.h == zero;
+        const VM lo_negative = load(neg_l + o) != zero;
+        const VM to_lo = ~((v.h < zero) ^ lo_negative);
+        lo = select(to_lo, x, lo);
+        hi = select(to_lo, hi, x);
+        const VD step = ((splat(2.0) * v.h) * v.dh) / ((splat(2.0) * v.dh) * v.dh - v.h * v.d2h);
+        VD next_x = x - step;
+        const VM inside = (next_x > lo) & (next_x < hi);
+        next_x = select(inside, next_x, splat(0.5) * (lo + hi));
+        const VD qv = v.d2h / (splat(2.0) * v.dh);
+        const VD cv = abs(qv * qv - v.d3h / (splat(6.0) * v.dh));
+        const VM converged = inside & ((cv * (step * step)) * abs(step) <= splat(0.25) * tol);
+        const VD moved = abs(next_x - x);
+        const VD iterations = load(it_l + o) + splat(1.0);
+        const VM done = root_hit | converged | (moved <= tol) | (hi - lo <= tol) | (iterations == splat(100.0));
+        store(lo_l + o, select(root_hit, load(lo_l + o), lo));
+        store(hi_l + o, select(root_hit, load(hi_l + o), hi));
+        store(x_l + o, select(root_hit, x, next_x));
+        store(it_l + o, iterations);
+        to_scalar |= bits(rho_zero) << o;
+        finished |= bits(done) << o;
+      }
+      to_scalar &= busy;
+      finished = (finished & busy) | to_scalar;
       if (finished == 0) continue;
       for_each_lane(finished, [&](int l) {
         const int j = job[l], k = q.candidate[j];
