@@ -16,9 +16,11 @@
 // near-tangent pair and returned as the point between them (the rounding of
 // h is then above the near-tangent threshold); fatter spindles are solved
 // too, but one of minor / major = 9e8 returned its centre for a root. Nor does it hold, for a horn or nearly horn
-// torus (|minor - major| below 2^-20 of major + minor), for a ray that
-// passes that close to the axis (kTorusAxisClearance): such a ray can
-// return tube centres for the roots beside the axis.
+// torus (|minor - major| below 2^-12 of major + minor: kTorusNearlyHorn), for a
+// ray that passes within 2^-20 of major + minor of the axis
+// (kTorusAxisClearance): such a ray can return tube centres for the roots
+// beside the axis, or the chord's end for a root (seen at |minor - major| up
+// to 7e-6 of major + minor).
 #pragma once
 
 #include "toroid/math/device.h"
@@ -30,6 +32,9 @@ namespace toroid {
 // 1 / kTorusAspectLimit to kTorusFattestSpindle (the spindles it is tested on).
 inline constexpr double kTorusAspectLimit = 0x1p30;
 inline constexpr double kTorusFattestSpindle = 2;
+// A torus is nearly horn, for the exception above, where |minor - major| is
+// below this fraction of major + minor.
+inline constexpr double kTorusNearlyHorn = 0x1p-12;
 // For a nearly horn torus, the least distance of the ray from the axis, in
 // units of major + minor, for which it holds (see above).
 inline constexpr double kTorusAxisClearance = 0x1p-20;
