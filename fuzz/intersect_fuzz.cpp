@@ -73,8 +73,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
        {toroid::TorusSolver::Default, toroid::TorusSolver::Ferrari, toroid::TorusSolver::Tianheng}) {
     double t[4];
     const int count = toroid::intersect_torus(R, r, o, d, t, s);
-    const bool near_horn_axis = std::abs(r - R) < toroid::kTorusNearlyHorn * (R + r) &&
-                                axis_distance(o, d) < toroid::kTorusAxisClearance * (R + r);
+    const bool near_horn_axis =
+        R - r < toroid::kTorusNearlyHorn * (R + r) && axis_distance(o, d) < toroid::kTorusAxisClearance * (R + r);
     const bool in_domain =
         R / r < toroid::kTorusAspectLimit && r / R <= toroid::kTorusFattestSpindle && !near_horn_axis;
     if (s == toroid::TorusSolver::Default && in_domain) {

@@ -15,12 +15,13 @@
 // roots across a tube thinner than about 1e-10 major can be taken for a
 // near-tangent pair and returned as the point between them (the rounding of
 // h is then above the near-tangent threshold); fatter spindles are solved
-// too, but one of minor / major = 9e8 returned its centre for a root. Nor does it hold, for a horn or nearly horn
-// torus (|minor - major| below 2^-12 of major + minor: kTorusNearlyHorn), for a
-// ray that passes within 2^-20 of major + minor of the axis
+// too, but one of minor / major = 9e8 returned its centre for a root. Nor does it hold, for a spindle, horn or nearly
+// horn torus (minor above major less 2^-12 of major + minor: kTorusNearlyHorn),
+// for a ray that passes within 2^-20 of major + minor of the axis
 // (kTorusAxisClearance): such a ray can return tube centres for the roots
-// beside the axis, or the chord's end for a root (seen at |minor - major| up
-// to 7e-6 of major + minor).
+// beside the axis, or a point far from the surface for a root (seen on
+// spindles of minor / major from 1 + 3e-6 to 1.19, with the origin beyond
+// the lemon's pole).
 #pragma once
 
 #include "toroid/math/device.h"
@@ -32,8 +33,8 @@ namespace toroid {
 // 1 / kTorusAspectLimit to kTorusFattestSpindle (the spindles it is tested on).
 inline constexpr double kTorusAspectLimit = 0x1p30;
 inline constexpr double kTorusFattestSpindle = 2;
-// A torus is nearly horn, for the exception above, where |minor - major| is
-// below this fraction of major + minor.
+// A torus is nearly horn, for the exception above, where major - minor is
+// below this fraction of major + minor (spindles and horn tori are included).
 inline constexpr double kTorusNearlyHorn = 0x1p-12;
 // For a nearly horn torus, the least distance of the ray from the axis, in
 // units of major + minor, for which it holds (see above).
