@@ -67,6 +67,10 @@ extern "C" void on_interrupt(int sig) {
 
 }  // namespace
 
+void interrupt(int sig) { on_interrupt(sig); }
+
+int interrupt_signal() { return g_signal; }
+
 void catch_interrupts() {
   struct sigaction sa {};
   sa.sa_handler = on_interrupt;

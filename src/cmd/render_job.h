@@ -72,9 +72,14 @@ void print_summary(const Canvas& canvas, int samples, Integrator integrator, con
                    std::uint64_t rays);
 
 // SIGINT and SIGTERM set interrupted(); interrupted_exit() says so (unless
-// told not to) and gives the exit status, 128 + the signal.
+// told not to) and gives the exit status, 128 + the signal. interrupt(sig)
+// records an interrupt as the handler does (rank 0 of an MPI job takes on
+// the interrupt a worker reports); interrupt_signal() is the signal
+// recorded, 0 when none.
 void catch_interrupts();
 const std::atomic<bool>& interrupted();
+void interrupt(int sig);
+int interrupt_signal();
 int interrupted_exit(bool say = true);
 
 // The progress bar on stderr (when shows_bar: a terminal, not --quiet).

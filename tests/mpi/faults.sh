@@ -3,10 +3,11 @@
 # What goes wrong in an MPI job ends it with a clear message, a non-zero
 # status and no output file: a scene error (reported once), a scene that one
 # rank cannot read, a rank whose scene differs, a rank killed mid-render
-# (SIGKILL), and Ctrl-C (SIGINT) on mpirun; ranks given different
+# (SIGKILL), a rank told to stop (SIGTERM, as a batch system does) and
+# Ctrl-C (SIGINT) on mpirun; ranks given different
 # --exposure, --linear or --integrator options.
 #   tests/mpi/faults.sh CASE MPIEXEC TOROID SOURCE_DIR WORK_DIR
-#   CASE: scene-error | unreadable-on-one-rank | different-scene | different-options | killed-rank | interrupt
+#   CASE: scene-error | unreadable-on-one-rank | different-scene | different-options | killed-rank | terminated-rank | interrupt
 set -euo pipefail
 case_name=$1 mpiexec=$2 toroid=$3 source=$4 work=$5
 rm -rf "$work" && mkdir -p "$work/out"
@@ -64,13 +65,22 @@ wait_for() {
   kill -9 "$pid" 2>/dev/null || true
 }
 
-long_render() {  # a render of many seconds on 2 ranks, in the background
-  "$mpiexec" --oversubscribe -np 2 "$toroid" render "$source/scenes/bagels.yaml" -o "$out" --samples 64 --threads 1 \
+long_render() {  # a render of some 15 s on 2 ranks (unloaded), in the background
+  "$mpiexec" --oversubscribe -np 2 "$toroid" render "$source/scenes/bagels.yaml" -o "$out" --samples 512 --threads 1 \
     2>"$work/log" &
   job=$!
   # It has started once rank 1 runs and rank 0's first tiles are done.
   [ -n "$(rank_pid 1)" ] || fail "$case_name: rank 1 never started"
   sleep 1.5
+}
+
+# Sends SIGNAL to PID (a rank, or mpiexec) of the long render; the job must
+# end within 20 s and fail as expect_failure says, with PATTERN once.
+signal_job() {  # SIGNAL PID PATTERN
+  kill "-$1" "$2"
+  wait_for "$job" 20
+  [ "$waited" -ne 124 ] || fail "$case_name: the job still ran 20 s after SIG$1"
+  expect_failure "$waited" "$3" 1
 }
 
 status=0
@@ -105,19 +115,16 @@ case "$case_name" in
     ;;
   killed-rank)
     long_render
-    kill -9 "$(rank_pid 1)"
-    wait_for "$job" 20
-    status=$waited
-    [ "$status" -ne 124 ] || fail "killed-rank: the job still ran 20 s after rank 1 was killed"
-    expect_failure "$status" "process rank 1" 1
+    signal_job KILL "$(rank_pid 1)" "process rank 1"
+    ;;
+  terminated-rank)
+    # rank 1 alone is told to stop: rank 0 reports it and ends the job
+    long_render
+    signal_job TERM "$(rank_pid 1)" "toroid render: interrupted; nothing written"
     ;;
   interrupt)
     long_render
-    kill -INT "$job"
-    wait_for "$job" 20
-    status=$waited
-    [ "$status" -ne 124 ] || fail "interrupt: the job still ran 20 s after SIGINT"
-    expect_failure "$status" "toroid render: interrupted; nothing written" 1
+    signal_job INT "$job" "toroid render: interrupted; nothing written"
     ;;
   *)
     echo "unknown case '$case_name'" >&2

@@ -29,7 +29,7 @@ namespace toroid::cmd {
 
 namespace {
 
-enum Tag : int { kRequest = 1, kAssign = 2, kResult = 3, kMessage = 4 };
+enum Tag : int { kRequest = 1, kAssign = 2, kResult = 3, kMessage = 4, kInterrupted = 5, kNever = 6 };
 
 int world_rank() {
   int r = 0;
@@ -142,7 +142,15 @@ int serve_as_worker(RenderJob& job) {
                                                *out++ = pixels[i].b;
                                              }
                                            });
-    if (stats.cancelled || interrupted()) return interrupted_exit(false);
+    if (stats.cancelled || interrupted()) {
+      // Rank 0 says so and ends the job: a worker that ended first would
+      // have mpirun kill rank 0 before it could. So the worker reports the
+      // signal and waits, on a message that never comes, to be ended.
+      int sig = interrupt_signal();
+      MPI_Send(&sig, 1, MPI_INT, 0, kInterrupted, MPI_COMM_WORLD);
+      MPI_Recv(&sig, 1, MPI_INT, 0, kNever, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      return interrupted_exit(false);
+    }
     message[0] = run[0];
     message[1] = run[1];
     message[2] = static_cast<double>(stats.rays);
@@ -223,6 +231,10 @@ GatherResult serve_as_root(RenderJob& job, Canvas& canvas, bool show_bar) {
       const int run[2] = {first, count};
       if (count == 0) --working;
       MPI_Send(run, 2, MPI_INT, status.MPI_SOURCE, kAssign, MPI_COMM_WORLD);
+    } else if (status.MPI_TAG == kInterrupted) {
+      int sig = 0;
+      MPI_Recv(&sig, 1, MPI_INT, status.MPI_SOURCE, kInterrupted, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      interrupt(sig);  // the next turn of the loop stops
     } else if (status.MPI_TAG == kResult) {
       int n = 0;
       MPI_Get_count(&status, MPI_DOUBLE, &n);
@@ -282,7 +294,7 @@ int run_render_mpi(const RenderCommandOptions& opt) {
 
   if (rank != 0) {
     const int code = serve_as_worker(job);
-    return code == 0 ? finish(0) : code;  // interrupted: mpirun ends the job
+    return code == 0 ? finish(0) : code;
   }
   Canvas canvas(job.camera.hsize(), job.camera.vsize());
   const GatherResult gathered = serve_as_root(job, canvas, shows_bar(opt));
