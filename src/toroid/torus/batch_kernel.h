@@ -10,8 +10,8 @@
 // compare every row. A ray that leaves the common case goes to the scalar
 // code (intersect_torus_row), which answers it as the single-ray call does:
 // a spindle or horn torus, a torus or direction outside the solver's range,
-// an invalid ray, a ray through the axis, an exact zero of h at a cut, a
-// near-tangent pair.
+// an invalid ray, a ray through or within rounding of the axis, an exact
+// zero of h at a cut, a near-tangent pair.
 //
 // The rays of a chunk go through four stages, each on full vectors:
 //  1. the move to the point nearest the centre, and the chord inside the
@@ -334,6 +334,10 @@ class BatchSolver {
       store(rho_i3_l, rho_i3);
       for_each_lane(concave_lanes, [&](int l) { cube_root[l] = std::cbrt(rho_i3_l[l]); });
       const VD rho_i = load(cube_root);
+      // Where the concave stretch is too narrow for rho's rounding, the
+      // scalar code cuts the axis passage as a kink (intersect.cpp's
+      // kAxisBlur, 2^-32): those rays go to it.
+      fallback = fallback | (has_concave & (rho_i <= splat(0x1p-32) * (abs(f.oh[0]) + abs(f.oh[1]))));
       const VD excess = rho_i * rho_i - rho_min2;
       const VD hw = sqrt(select(zero < excess, excess, zero) / cc);
       concave_lo = select(has_concave, s_axis - hw, zero);
@@ -517,17 +521,22 @@ class BatchSolver {
         hi = select(to_lo, hi, x);
         const VD step = ((splat(2.0) * v.h) * v.dh) / ((splat(2.0) * v.dh) * v.dh - v.h * v.d2h);
         VD next_x = x - step;
-        const VM inside = (next_x > lo) & (next_x < hi);
+        // As the scalar RootSearch::step: Halley's step only where it is
+        // close to Newton's, and a step below x's resolution settles x.
+        const VM halley = abs(v.h * v.d2h) <= v.dh * v.dh;
+        const VM settled = halley & (next_x == x);
+        const VM inside = halley & (next_x > lo) & (next_x < hi);
         next_x = select(inside, next_x, splat(0.5) * (lo + hi));
         const VD qv = v.d2h / (splat(2.0) * v.dh);
         const VD cv = abs(qv * qv - v.d3h / (splat(6.0) * v.dh));
         const VM converged = inside & ((cv * (step * step)) * abs(step) <= splat(0.25) * tol);
         const VD moved = abs(next_x - x);
         const VD iterations = load(it_l + o) + splat(1.0);
-        const VM done = root_hit | converged | (moved <= tol) | (hi - lo <= tol) | (iterations == splat(100.0));
+        const VM stays = root_hit | settled;
+        const VM done = stays | converged | (moved <= tol) | (hi - lo <= tol) | (iterations == splat(100.0));
         store(lo_l + o, select(root_hit, load(lo_l + o), lo));
         store(hi_l + o, select(root_hit, load(hi_l + o), hi));
-        store(x_l + o, select(root_hit, x, next_x));
+        store(x_l + o, select(stays, x, next_x));
         store(it_l + o, iterations);
         to_scalar |= bits(rho_zero) << o;
         finished |= bits(done) << o;

@@ -38,6 +38,12 @@ namespace toroid {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+// Where the ray passes the axis, rho carries the rounding of p's x and y,
+// about eps |o_xy|, so a sample there resolves h'' only where rho is well
+// above it: h_out's concave stretch beside the axis is cut at its edges
+// (rho = rho_i) when rho_i exceeds kAxisBlur |o_xy| (rho's relative error
+// there is then below 2^-18), and as a kink at the axis passage otherwise.
+constexpr double kAxisBlur = 0x1p-32;
 
 // A factor's value and first three derivatives at s.
 struct Sample {
@@ -78,11 +84,22 @@ class TorusFactor {
     const double rho = std::sqrt(rho2);
     const double a = rho + sign_ * R_;  // rho - R, or rho + R
     const double h = (a - r_) * (a + r_) + p[2] * p[2];
-    if (rho == 0) return {s, h, 2.0 * (a * side * std::sqrt(c_) + p[2] * d_[2]), 2.0 * dd_, 0.0};
+    if (rho == 0) return at_axis(s, h, a, p[2], side);
     const double inv_rho = 1.0 / rho;
     const double drho = (p[0] * d_[0] + p[1] * d_[1]) * inv_rho;
     const double k = sign_ * 2.0 * R_ * K_ * (inv_rho * inv_rho * inv_rho);
     return {s, h, 2.0 * (a * drho + p[2] * d_[2]), 2.0 * dd_ + k, -3.0 * k * drho * inv_rho};
+  }
+
+  // h and its one-sided derivatives where the ray passes the axis (an axis
+  // cut): there rho is at or below its own rounding, so rho' is taken as
+  // side |d_xy| and h'' as 2|d|^2 (the spike of h'' beside the axis is
+  // narrower than the samples resolve, and is left out).
+  TOROID_HD Sample sample_at_axis(double s, double side) const {
+    double p[3];
+    for (int i = 0; i < 3; ++i) p[i] = o_hi_[i] + (s * d_[i] + o_lo_[i]);
+    const double a = std::sqrt(p[0] * p[0] + p[1] * p[1]) + sign_ * R_;
+    return at_axis(s, (a - r_) * (a + r_) + p[2] * p[2], a, p[2], side);
   }
 
   // h at s in double-double arithmetic: used where double rounding would
@@ -100,6 +117,10 @@ class TorusFactor {
   TOROID_HD double minor() const { return r_; }
 
  private:
+  TOROID_HD Sample at_axis(double s, double h, double a, double z, double side) const {
+    return {s, h, 2.0 * (a * side * std::sqrt(c_) + z * d_[2]), 2.0 * dd_, 0.0};
+  }
+
   double o_hi_[3], o_lo_[3];
   double d_[3];
   double R_, r_, sign_;
@@ -277,7 +298,18 @@ class RootCollector {
       // Halley's step: cubic convergence, with h'' and h''' free from sample().
       const double step = 2 * v.h * v.dh / (2 * v.dh * v.dh - v.h * v.d2h);
       double next = x - step;
-      if (!(next > lo && next < hi)) {  // also catches NaN
+      // Where |h h''| <= h'^2 the step is 2/3 to 2 times Newton's, h / h',
+      // so a small step means a near root; elsewhere (beside an extremum of
+      // h, or where a sample beside the axis is unreliable) it can be small
+      // far from any root: then bisect.
+      const bool halley = std::abs(v.h * v.d2h) <= v.dh * v.dh;
+      if (!halley || !(next > lo && next < hi)) {  // also catches NaN
+        // x is an end of the bracket now: a step that leaves x unchanged
+        // is below x's resolution, and x is the root.
+        if (halley && next == x) {
+          done = true;
+          return;
+        }
         next = 0.5 * (lo + hi);
       } else if (!precise) {
         // The error after a Halley step is about |C| step^3, with
@@ -374,11 +406,17 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       const double square = rho_i3 * rho_i3;
       if (square > rho_min2 * rho_min2 * rho_min2 || (square < 0x1p-1000 && std::cbrt(rho_i3) > std::sqrt(rho_min2))) {
         const double rho_i = std::cbrt(rho_i3);
-        const double hw = std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c());
-        concave_lo = s_axis - hw;
-        concave_hi = s_axis + hw;
-        if (concave_lo > lo && concave_lo < hi) cuts[ncut++] = concave_lo;
-        if (concave_hi > lo && concave_hi < hi) cuts[ncut++] = concave_hi;
+        if (rho_i > kAxisBlur * (std::abs(o[0].hi) + std::abs(o[1].hi))) {
+          const double hw = std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c());
+          concave_lo = s_axis - hw;
+          concave_hi = s_axis + hw;
+          if (concave_lo > lo && concave_lo < hi) cuts[ncut++] = concave_lo;
+          if (concave_hi > lo && concave_hi < hi) cuts[ncut++] = concave_hi;
+        } else if (s_axis > lo && s_axis < hi) {
+          // The concave stretch is too narrow for rho's rounding (see
+          // kAxisBlur): the axis passage is cut as a kink.
+          axis_cut[ncut] = true, cuts[ncut++] = s_axis;
+        }
       }
     }
   }
@@ -389,8 +427,8 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   for (int i = 0; i < ncut; ++i) {
     // Each cut is sampled once and shared by the pieces on either side (from
     // each side at an axis crossing, where rho has a kink).
-    const Sample end = f.sample(cuts[i + 1], -1.0);
-    const Sample next_start = axis_cut[i + 1] ? f.sample(cuts[i + 1], +1.0) : end;
+    const Sample end = axis_cut[i + 1] ? f.sample_at_axis(cuts[i + 1], -1.0) : f.sample(cuts[i + 1], -1.0);
+    const Sample next_start = axis_cut[i + 1] ? f.sample_at_axis(cuts[i + 1], +1.0) : end;
     if (cuts[i + 1] >= s_min && cuts[i] <= s_max) {
       const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
       const double sigma = mid > concave_lo && mid < concave_hi ? -1.0 : 1.0;

@@ -11,17 +11,12 @@
 // Tori and rays of any size are solved alike (they are scaled, exactly, by
 // powers of two). Each root puts o + t d within a few ulps of
 // |o| + |t d| + major + minor of the surface for minor / major from 2^-30
-// (kTorusAspectLimit) to 2 (kTorusFattestSpindle). Thinner tubes are solved too, but a pair of
-// roots across a tube thinner than about 1e-10 major can be taken for a
-// near-tangent pair and returned as the point between them (the rounding of
-// h is then above the near-tangent threshold); fatter spindles are solved
-// too, but one of minor / major = 9e8 returned its centre for a root. Nor does it hold, for a spindle, horn or nearly
-// horn torus (minor above major less 2^-12 of major + minor: kTorusNearlyHorn),
-// for a ray that passes within 2^-20 of major + minor of the axis
-// (kTorusAxisClearance): such a ray can return tube centres for the roots
-// beside the axis, or a point far from the surface for a root (seen on
-// spindles of minor / major from 1 + 3e-6 to 1.19, with the origin beyond
-// the lemon's pole).
+// (kTorusAspectLimit) to 2 (kTorusFattestSpindle), the range the accuracy
+// families measure; the fuzzer checks the same bound on fatter spindles too.
+// Thinner tubes are solved too, but a pair of roots across a tube thinner
+// than about 1e-10 major can be taken for a near-tangent pair and returned as
+// the point between them (the rounding of h is then above the near-tangent
+// threshold).
 #pragma once
 
 #include "toroid/math/device.h"
@@ -33,12 +28,6 @@ namespace toroid {
 // 1 / kTorusAspectLimit to kTorusFattestSpindle (the spindles it is tested on).
 inline constexpr double kTorusAspectLimit = 0x1p30;
 inline constexpr double kTorusFattestSpindle = 2;
-// A torus is nearly horn, for the exception above, where major - minor is
-// below this fraction of major + minor (spindles and horn tori are included).
-inline constexpr double kTorusNearlyHorn = 0x1p-12;
-// For a nearly horn torus, the least distance of the ray from the axis, in
-// units of major + minor, for which it holds (see above).
-inline constexpr double kTorusAxisClearance = 0x1p-20;
 
 // Every real root t of |o + t d| on the torus (negative ones too), ascending,
 // with multiplicity where the quartic has a multiple root: a tangent point is

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <string>
 
 namespace toroid {
 namespace {
@@ -96,6 +97,38 @@ TEST(TorusIntersect, ARayGrazingTheAxisHasNoRootAtTheCentre) {
     const double want[4] = {-1.25 / M_SQRT2, -0.75 / M_SQRT2, 0.75 / M_SQRT2, 1.25 / M_SQRT2};
     for (int i = 0; i < 4; ++i) EXPECT_NEAR(x.t[i], want[i], 1e-15) << i;
   }
+}
+
+// A ray that passes the axis far from its point nearest the centre: there
+// rho is as small as its rounding, and h_out's concave stretch beside the
+// axis is narrower than the samples resolve. Its roots are those of the ray
+// through the axis (K = 0, a kink of rho).
+TEST(TorusIntersect, ARayPassingTheAxisAwayFromTheCentreKeepsItsRoots) {
+  for (const double z : {0.2, -0.1}) {
+    const Roots exact = roots(1, 0.25, {-2, 0, z + 0.6}, {1, 0, -0.3});
+    ASSERT_EQ(exact.n, 2);
+    for (const double offset : {1e-10, 1e-20, 1e-26, 1e-30, 1e-40, 1e-60, 1e-100, 1e-200, 1e-300}) {
+      SCOPED_TRACE(std::to_string(z) + " " + std::to_string(std::log10(offset)));
+      const Roots x = roots(1, 0.25, {-2, offset, z + 0.6}, {1, 0, -0.3});
+      ASSERT_EQ(x.n, 2);
+      for (int i = 0; i < 2; ++i) EXPECT_NEAR(x.t[i], exact.t[i], 1e-15) << i;
+    }
+  }
+}
+
+// The fuzzer's spindle (fuzz/corpus/intersect/spindle-near-axis-origin-
+// beyond-pole): minor / major = 1.19, a ray that crosses within 1e-54 sizes
+// of the axis at its origin, beyond the lemon's pole, and climbs at a slope
+// of 4e-19. It meets each pole twice (the outer sheet and the lemon).
+TEST(TorusIntersect, ASpindleRayBesideTheAxisMeetsEachPoleTwice) {
+  const double R = 6.8355779448292253e+124, r = 8.1576898862883575e+124;
+  const double o[3] = {-4.2525584673585782e+71, -4.2525583765009148e+71, -6.8351024672236235e+124};
+  const double d[3] = {3.1424635695958265e-310, -6.8346989773204297e+124, o[0] * o[1]};
+  double t[4];
+  ASSERT_EQ(intersect_torus(R, r, o, d, t), 4);
+  const double pole = std::sqrt((r - R) * (r + R));
+  const double want[4] = {-pole, -pole, pole, pole};
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR((o[2] + t[i] * d[2]) / pole, want[i] / pole, 1e-15) << i;
 }
 
 TEST(TorusIntersect, ClosedFormsReportNoNonFiniteRoots) {
