@@ -386,7 +386,9 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
 
   // Breakpoints of convexity: the axis crossing when K = 0 (a kink of rho),
   // else for h_out the two points s_axis -+ hw where rho^3 = R K / |d|^2;
-  // h_out is concave between them, convex elsewhere; h_in is convex.
+  // h_out is concave between them, convex elsewhere; h_in is convex. Where
+  // the ray passes the axis within rho's rounding, the passage is a kink
+  // for either factor.
   double cuts[4];
   bool axis_cut[4] = {false, false, false, false};
   int ncut = 0;
@@ -418,6 +420,13 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
           axis_cut[ncut] = true, cuts[ncut++] = s_axis;
         }
       }
+    } else if (f.K() <= kAxisBlur * kAxisBlur * f.c() * (o[0].hi * o[0].hi + o[1].hi * o[1].hi) && s_axis > lo &&
+               s_axis < hi) {
+      // h_in beside the axis: rho_min = sqrt(K / c) below the rounding of
+      // rho (kAxisBlur) is a kink of h_in, which near_tangent would locate
+      // too coarsely for the sign of its minimum (a nearly horn spindle's
+      // lemon); cut as for K = 0, each side is a plain convex piece.
+      axis_cut[ncut] = true, cuts[ncut++] = s_axis;
     }
   }
   cuts[ncut] = hi;

@@ -131,6 +131,19 @@ TEST(TorusIntersect, ASpindleRayBesideTheAxisMeetsEachPoleTwice) {
   for (int i = 0; i < 4; ++i) EXPECT_NEAR((o[2] + t[i] * d[2]) / pole, want[i] / pole, 1e-15) << i;
 }
 
+// A nearly horn spindle (minor - major = 2^-40): a ray along a diameter, 1e-30
+// from the axis, crosses the outer sheet twice and the lemon, 2^-40 across,
+// twice. Its point nearest the centre carries the rounding of the shift,
+// 1e-16, so the axis passage is blurred.
+TEST(TorusIntersect, ANearlyHornLemonIsFoundBesideTheAxis) {
+  const double R = 1, r = 1 + 0x1p-40;
+  const Roots x = roots(R, r, {-1, 1e-30, 0}, {3, 0, 0});
+  ASSERT_EQ(x.n, 4);
+  const double want[4] = {(1 - (R + r)) / 3, (1 - (r - R)) / 3, (1 + (r - R)) / 3, (1 + R + r) / 3};
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(x.t[i], want[i], 1e-15) << i;
+  EXPECT_LT(x.t[1], x.t[2]);
+}
+
 TEST(TorusIntersect, ClosedFormsReportNoNonFiniteRoots) {
   // Coefficients overflow here (R = 1e4, |o| ~ 1e113): the closed forms
   // may find nothing, but never a NaN.
