@@ -76,30 +76,22 @@ class TorusFactor {
   // h and its derivatives at s. `side` picks the one-sided derivative of rho
   // where the ray crosses the axis (rho = 0): -1 from the left, +1 from the
   // right. h'' = 2|d|^2 + sign 2 R K / rho^3 and h''' = -3 (h'' - 2|d|^2) rho'/rho
-  // cost no extra square root.
-  TOROID_HD Sample sample(double s, double side = 1.0) const {
+  // cost no extra square root. At an axis cut (`at_axis_cut`) rho is at or
+  // below its own rounding, so it is treated as the kink at rho = 0: rho'
+  // is side |d_xy| and h'' is 2|d|^2 (the spike of h'' beside the axis is
+  // narrower than the samples resolve, and is left out).
+  TOROID_HD Sample sample(double s, double side = 1.0, bool at_axis_cut = false) const {
     double p[3];
     for (int i = 0; i < 3; ++i) p[i] = o_hi_[i] + (s * d_[i] + o_lo_[i]);
     const double rho2 = p[0] * p[0] + p[1] * p[1];
     const double rho = std::sqrt(rho2);
     const double a = rho + sign_ * R_;  // rho - R, or rho + R
     const double h = (a - r_) * (a + r_) + p[2] * p[2];
-    if (rho == 0) return at_axis(s, h, a, p[2], side);
+    if (rho == 0 || at_axis_cut) return {s, h, 2.0 * (a * side * std::sqrt(c_) + p[2] * d_[2]), 2.0 * dd_, 0.0};
     const double inv_rho = 1.0 / rho;
     const double drho = (p[0] * d_[0] + p[1] * d_[1]) * inv_rho;
     const double k = sign_ * 2.0 * R_ * K_ * (inv_rho * inv_rho * inv_rho);
     return {s, h, 2.0 * (a * drho + p[2] * d_[2]), 2.0 * dd_ + k, -3.0 * k * drho * inv_rho};
-  }
-
-  // h and its one-sided derivatives where the ray passes the axis (an axis
-  // cut): there rho is at or below its own rounding, so rho' is taken as
-  // side |d_xy| and h'' as 2|d|^2 (the spike of h'' beside the axis is
-  // narrower than the samples resolve, and is left out).
-  TOROID_HD Sample sample_at_axis(double s, double side) const {
-    double p[3];
-    for (int i = 0; i < 3; ++i) p[i] = o_hi_[i] + (s * d_[i] + o_lo_[i]);
-    const double a = std::sqrt(p[0] * p[0] + p[1] * p[1]) + sign_ * R_;
-    return at_axis(s, (a - r_) * (a + r_) + p[2] * p[2], a, p[2], side);
   }
 
   // h at s in double-double arithmetic: used where double rounding would
@@ -117,10 +109,6 @@ class TorusFactor {
   TOROID_HD double minor() const { return r_; }
 
  private:
-  TOROID_HD Sample at_axis(double s, double h, double a, double z, double side) const {
-    return {s, h, 2.0 * (a * side * std::sqrt(c_) + z * d_[2]), 2.0 * dd_, 0.0};
-  }
-
   double o_hi_[3], o_lo_[3];
   double d_[3];
   double R_, r_, sign_;
@@ -396,6 +384,8 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   double concave_lo = 0, concave_hi = 0;  // empty: convex everywhere
   if (f.c() > 0) {
     const double s_axis = -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c();
+    // rho's rounding where the ray passes the axis (see kAxisBlur).
+    const double blur = kAxisBlur * (std::abs(o[0].hi) + std::abs(o[1].hi));
     if (f.K() == 0) {
       if (s_axis > lo && s_axis < hi) axis_cut[ncut] = true, cuts[ncut++] = s_axis;
     } else if (f.is_outer()) {
@@ -408,7 +398,7 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       const double square = rho_i3 * rho_i3;
       if (square > rho_min2 * rho_min2 * rho_min2 || (square < 0x1p-1000 && std::cbrt(rho_i3) > std::sqrt(rho_min2))) {
         const double rho_i = std::cbrt(rho_i3);
-        if (rho_i > kAxisBlur * (std::abs(o[0].hi) + std::abs(o[1].hi))) {
+        if (rho_i > blur) {
           const double hw = std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c());
           concave_lo = s_axis - hw;
           concave_hi = s_axis + hw;
@@ -420,10 +410,9 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
           axis_cut[ncut] = true, cuts[ncut++] = s_axis;
         }
       }
-    } else if (f.K() <= kAxisBlur * kAxisBlur * f.c() * (o[0].hi * o[0].hi + o[1].hi * o[1].hi) && s_axis > lo &&
-               s_axis < hi) {
+    } else if (s_axis > lo && s_axis < hi && f.K() <= blur * blur * f.c()) {
       // h_in beside the axis: rho_min = sqrt(K / c) below the rounding of
-      // rho (kAxisBlur) is a kink of h_in, which near_tangent would locate
+      // rho is a kink of h_in, which near_tangent would locate
       // too coarsely for the sign of its minimum (a nearly horn spindle's
       // lemon); cut as for K = 0, each side is a plain convex piece.
       axis_cut[ncut] = true, cuts[ncut++] = s_axis;
@@ -436,8 +425,8 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   for (int i = 0; i < ncut; ++i) {
     // Each cut is sampled once and shared by the pieces on either side (from
     // each side at an axis crossing, where rho has a kink).
-    const Sample end = axis_cut[i + 1] ? f.sample_at_axis(cuts[i + 1], -1.0) : f.sample(cuts[i + 1], -1.0);
-    const Sample next_start = axis_cut[i + 1] ? f.sample_at_axis(cuts[i + 1], +1.0) : end;
+    const Sample end = f.sample(cuts[i + 1], -1.0, axis_cut[i + 1]);
+    const Sample next_start = axis_cut[i + 1] ? f.sample(cuts[i + 1], +1.0, true) : end;
     if (cuts[i + 1] >= s_min && cuts[i] <= s_max) {
       const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
       const double sigma = mid > concave_lo && mid < concave_hi ? -1.0 : 1.0;
