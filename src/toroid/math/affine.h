@@ -35,6 +35,20 @@ struct Affine {
     return {row(0, t), row(1, t), row(2, t), t.w};
   }
 
+  // (*this) * t for a t that is known to be a point (w = 1) or a vector
+  // (w = 0), without the product by w: for a point the same bits (m * 1 is
+  // m), for a vector the same but for the sign of a zero sum (no + 0). Every
+  // ray's origin and direction go through these into object space.
+  [[gnu::always_inline]] constexpr Tuple times_point(const Tuple& t) const {
+    return {m[0][0] * t.x + m[0][1] * t.y + m[0][2] * t.z + m[0][3],
+            m[1][0] * t.x + m[1][1] * t.y + m[1][2] * t.z + m[1][3],
+            m[2][0] * t.x + m[2][1] * t.y + m[2][2] * t.z + m[2][3], t.w};
+  }
+  [[gnu::always_inline]] constexpr Tuple times_vector(const Tuple& t) const {
+    return {m[0][0] * t.x + m[0][1] * t.y + m[0][2] * t.z, m[1][0] * t.x + m[1][1] * t.y + m[1][2] * t.z,
+            m[2][0] * t.x + m[2][1] * t.y + m[2][2] * t.z, t.w};
+  }
+
   // One component of (*this) * t, for callers that need only one (a
   // plane's height).
   constexpr double row(int i, const Tuple& t) const {

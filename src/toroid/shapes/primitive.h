@@ -9,7 +9,8 @@
 // read them from there instead of from a growing list. The template calls
 // find_hits directly: one virtual call per shape and query, not two. The
 // capacity is a template parameter so that the four-hit shapes keep arrays
-// of four: the array's elements are initialised on every call.
+// of four, and the arrays are left uninitialised: find_hits writes the first
+// n, and only those are read.
 #pragma once
 
 #include "toroid/shapes/shape.h"
@@ -23,14 +24,27 @@ class Primitive : public Shape {
  public:
   static constexpr int kMaxHits = MaxHits;
 
+ private:
+  // Room for find_hits's answers without constructing them (Intersection's
+  // members have initialisers, which an array would run on every call).
+  union HitSlots {
+    HitSlots() {}
+    Intersection at[kMaxHits];
+  };
+
+ public:
   void local_intersect(const Ray& local_ray, Intersections& xs) const final {
-    Intersection hits[kMaxHits];
+    HitSlots slots;
+    Intersection* const hits = slots.at;
     const int n = self().find_hits(local_ray, hits);
-    xs.insert(xs.end(), hits, hits + n);
+    // One push_back per hit: a range insert's general path costs more than
+    // the sphere's own arithmetic.
+    for (int i = 0; i < n; ++i) xs.push_back(hits[i]);
   }
 
   bool local_intersect_nearest(const Ray& local_ray, double t_max, Intersection& hit) const override {
-    Intersection hits[kMaxHits];
+    HitSlots slots;
+    Intersection* const hits = slots.at;
     const int n = self().find_hits(local_ray, hits);
     bool found = false;
     for (int i = 0; i < n; ++i)
@@ -43,7 +57,8 @@ class Primitive : public Shape {
   }
 
   bool local_blocks(const Ray& local_ray, double t_max) const override {
-    Intersection hits[kMaxHits];
+    HitSlots slots;
+    Intersection* const hits = slots.at;
     const int n = self().find_hits(local_ray, hits);
     for (int i = 0; i < n; ++i)
       if (hits[i].t >= 0 && hits[i].t < t_max) return true;

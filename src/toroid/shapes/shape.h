@@ -124,7 +124,9 @@ class Shape {
   virtual void transform_changed() {}
 
  private:
-  Ray to_object_space(const Ray& ray) const { return {inverse_ * ray.origin, inverse_ * ray.direction}; }
+  Ray to_object_space(const Ray& ray) const {
+    return {inverse_.times_point(ray.origin), inverse_.times_vector(ray.direction)};
+  }
 };
 
 }  // namespace toroid
