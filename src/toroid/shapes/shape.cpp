@@ -15,7 +15,7 @@ void Shape::set_transform(const Matrix4& m) {
 
 Tuple Shape::world_to_object(const Tuple& world_point) const {
   const Tuple p = parent ? parent->world_to_object(world_point) : world_point;
-  return inverse_ * p;
+  return inverse_.times_point(p);
 }
 
 Tuple Shape::normal_to_world(const Tuple& object_normal) const {

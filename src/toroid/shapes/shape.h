@@ -75,12 +75,16 @@ class Shape {
   // can answer without the transforms.
   virtual Tuple normal_at(const Tuple& world_point, const Intersection& hit = {}) const;
 
+  // world_point is a point (w = 1).
   Tuple world_to_object(const Tuple& world_point) const;
   Tuple normal_to_world(const Tuple& object_normal) const;
   // One step of normal_to_world: an object-space normal in the parent's
   // space, normalised.
   Tuple normal_to_parent(const Tuple& object_normal) const {
-    return normalize(inverse_.transpose_times(object_normal));
+    // normalize() less its division of w (0 / length is 0).
+    const Tuple n = inverse_.transpose_times(object_normal);
+    const double length = magnitude(n);
+    return vector(n.x / length, n.y / length, n.z / length);
   }
 
   // Box in this shape's own object space.
