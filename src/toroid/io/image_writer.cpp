@@ -70,8 +70,8 @@ std::string write_png(const Canvas& canvas, FILE* f, const ImageWriteOptions& op
   // honoured by some viewers and ignored by others.)
   if (!options.linear_png) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   // zlib's fastest level, rows unfiltered: at that level a row filter
-  // changes a render's file by a few percent either way, and Paeth's costs
-  // the writer 40% more instructions than none (docs/performance.md).
+  // changes a render's file by a few percent either way, and costs the
+  // writer time (docs/performance.md, "PNG output").
   png_set_compression_level(png, 1);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
   png_write_info(png, info);

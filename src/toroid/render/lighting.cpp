@@ -25,8 +25,8 @@ Color diffuse_specular(const Material& m, const Color& effective, const Color& i
   const Color diffuse = effective * m.diffuse * light_dot_normal;
   const Tuple reflectv = reflect(-lightv, normalv);
   const double reflect_dot_eye = dot(reflectv, eyev);
-  // No pow when the material has no highlight: the same result, without the
-  // tenth of a shaded point's time that pow takes.
+  // No pow when the material has no highlight: the same result, without
+  // pow's cost (a large share of a shaded point's).
   if (reflect_dot_eye <= 0 || m.specular == 0) return diffuse;
   return diffuse + intensity * (m.specular * std::pow(reflect_dot_eye, m.shininess));
 }
