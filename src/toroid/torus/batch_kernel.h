@@ -29,6 +29,7 @@
 
 #include "toroid/torus/batch.h"
 #include "toroid/torus/checked.h"
+#include "toroid/torus/hole.h"
 
 namespace toroid {
 namespace {
@@ -251,6 +252,15 @@ class BatchSolver {
     lo = select(oblique & (lo < z_first), z_first, lo);
     hi = select(oblique & (z_last < hi), z_last, hi);
     miss = miss | (~oblique & (abs(zo) > slab)) | (hi < lo);
+    // A ray through a ring torus's hole (hole.h), as factor_roots tests it.
+    VD end_rho2[2];
+    for (int e = 0; e < 2; ++e) {
+      const VD s = e == 0 ? lo : hi;
+      const VD x = oh[0] + (s * d[0] + ol[0]), y = oh[1] + (s * d[1] + ol[1]);
+      end_rho2[e] = x * x + y * y;
+    }
+    const VD limit = splat(hole_limit(R_, r_));
+    miss = miss | ((end_rho2[0] < limit) & (end_rho2[1] < limit));
     // The tolerance of the roots, from RootCollector.
     const VD tol_root = splat(2 * kBatchEps) * (splat(r_) / sqrt(dd));
 

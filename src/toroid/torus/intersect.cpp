@@ -29,6 +29,7 @@
 #include "toroid/math/double_double.h"
 #include "toroid/roots/monotone.h"
 #include "toroid/roots/polynomial.h"
+#include "toroid/torus/hole.h"
 
 #include <algorithm>
 #include <cmath>
@@ -371,6 +372,14 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
     return 0;
   }
   if (hi < lo || hi < s_min || lo > s_max) return 0;
+  if (f.is_outer()) {  // a ray through a ring torus's hole (hole.h)
+    const double limit = hole_limit(f.major(), f.minor());
+    const auto rho2_at = [&](double s) {
+      const double x = o[0].hi + (s * d[0] + o[0].lo), y = o[1].hi + (s * d[1] + o[1].lo);
+      return x * x + y * y;
+    };
+    if (rho2_at(lo) < limit && rho2_at(hi) < limit) return 0;
+  }
 
   // Breakpoints of convexity: the axis crossing when K = 0 (a kink of rho),
   // else for h_out the two points s_axis -+ hw where rho^3 = R K / |d|^2;

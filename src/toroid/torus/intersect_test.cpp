@@ -175,6 +175,31 @@ TEST(TorusIntersect, RayAboveTheTorusMisses) { EXPECT_EQ(roots(1, 0.25, {-5, 0, 
 
 TEST(TorusIntersect, RayAlongTheAxisMissesARingTorus) { EXPECT_EQ(roots(1, 0.25, {0, 0, -5}, {0, 0, 1}).n, 0); }
 
+// The hole test (hole.h) rejects a chord only when both its ends lie inside
+// the cylinder rho < R - r, less its margin: these rays keep their roots.
+TEST(TorusIntersect, RaysJustOutsideTheHoleKeepTheirRoots) {
+  // Parallel to the axis, about 1e-12 outside the inner equator: two roots
+  // close to z = 0, z^2 = r^2 - (r - gap)^2 (the gap is exact: Sterbenz).
+  const double x = 0.75 + 1e-12, gap = x - 0.75, z = std::sqrt(0.5 * gap - gap * gap);
+  const Roots grazing = roots(1, 0.25, {x, 0, -5}, {0, 0, 1});
+  ASSERT_EQ(grazing.n, 2);
+  EXPECT_NEAR(grazing.t[0], 5 - z, 1e-12);
+  EXPECT_NEAR(grazing.t[1], 5 + z, 1e-12);
+  // Into the hole through the top face and out through the inner wall:
+  // one end of the chord is in the hole, the other in the tube.
+  const Roots wall = roots(1, 0.25, {0, 0, 1}, {0.75, 0, -1});
+  ASSERT_EQ(wall.n, 2);
+  EXPECT_NEAR(wall.t[0], 1, 1e-12);  // (0.75, 0, 0), the inner equator, is on the surface
+}
+
+TEST(TorusIntersect, RaysThroughTheHoleMiss) {
+  EXPECT_EQ(roots(1, 0.25, {0.75 - 1e-9, 0, -5}, {0, 0, 1}).n, 0);
+  EXPECT_EQ(roots(1, 0.25, {0.3, -0.2, 3}, {-0.1, 0.05, -1}).n, 0);
+  double t = 0;
+  EXPECT_FALSE(intersect_torus_nearest(1, 0.25, std::array<double, 3>{0.5, 0, 2}.data(),
+                                       std::array<double, 3>{0, 0.1, -1}.data(), 0, 1e9, &t));
+}
+
 TEST(TorusIntersect, RayParallelToTheAxisThroughTheTube) {
   const Roots x = roots(1, 0.25, {1, 0, -5}, {0, 0, 1});
   ASSERT_EQ(x.n, 2);
