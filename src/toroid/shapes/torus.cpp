@@ -161,7 +161,11 @@ BoundingBox Torus::parent_space_bounds() const {
 
 double Torus::half_thickness() const { return partial_ ? Shape::half_thickness() : minor_; }
 
-AnnularCylinder Torus::washer() const { return {major_ - minor_, major_ + minor_, minor_}; }
+bool Torus::may_meet(const Ray& ray, double t_min, double t_max) const {
+  if (solver_ == TorusSolver::Default) return true;
+  const AnnularCylinder washer{major_ - minor_, major_ + minor_, minor_};
+  return washer.may_meet(ray.origin, ray.direction, t_min, t_max);
+}
 
 int Torus::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
   const int n = tube_hits(ray, hits);
@@ -171,7 +175,7 @@ int Torus::find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
 int Torus::tube_hits(const Ray& ray, Intersection hits[kMaxTubeHits]) const {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   // The washer holds the whole solid torus, so the caps too.
-  if (!washer().may_meet(ray.origin, ray.direction, -kInf, kInf)) return 0;
+  if (!may_meet(ray, -kInf, kInf)) return 0;
   const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
   const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
   double t[4];
@@ -274,8 +278,8 @@ int Torus::add_cap_hits(const Ray& ray, Intersection hits[kMaxHits], int n) cons
 
 bool Torus::nearest_root(const Ray& ray, double t_max, double& t) const {
   // Most rays that reach a torus's box miss the torus, or meet it beyond
-  // t_max (a nearer hit, the light): the washer turns them away cheaply.
-  if (!washer().may_meet(ray.origin, ray.direction, kBelowZero, t_max)) return false;
+  // t_max (a nearer hit, the light): they are turned away cheaply.
+  if (!may_meet(ray, kBelowZero, t_max)) return false;
   const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
   const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
   return intersect_torus_nearest(major_, minor_, o, d, kBelowZero, t_max, &t, solver_);
@@ -291,7 +295,7 @@ bool Torus::local_intersect_nearest(const Ray& ray, double t_max, Intersection& 
 
 bool Torus::local_blocks(const Ray& ray, double t_max) const {
   if (!keeps_all_) return Primitive::local_blocks(ray, t_max);
-  if (!washer().may_meet(ray.origin, ray.direction, kBelowZero, t_max)) return false;
+  if (!may_meet(ray, kBelowZero, t_max)) return false;
   const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
   const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
   return torus_blocks(major_, minor_, o, d, kBelowZero, t_max, solver_);

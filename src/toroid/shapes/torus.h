@@ -126,8 +126,11 @@ class Torus : public Primitive<Torus, kMaxTorusHits> {
     double cos_phi[2], sin_phi[2];  // phi_min, phi_max
   };
 
-  // The bounding washer: the solver runs only for rays that may meet it.
-  AnnularCylinder washer() const;
+  // Whether the ray may meet the solid torus in (t_min, t_max). The closed
+  // forms run only for rays that meet its bounding washer; the default
+  // solver turns away the others itself, more tightly (the ball, the slab
+  // and the hole, torus/hole.h), so for it this is true.
+  bool may_meet(const Ray& ray, double t_min, double t_max) const;
   bool nearest_root(const Ray& ray, double t_max, double& t) const;
   // The kept roots, sorted (find_hits without the caps).
   int tube_hits(const Ray& ray, Intersection hits[kMaxTubeHits]) const;

@@ -372,13 +372,15 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
     return 0;
   }
   if (hi < lo || hi < s_min || lo > s_max) return 0;
-  if (f.is_outer()) {  // a ray through a ring torus's hole (hole.h)
+  if (f.is_outer()) {
+    // The part of the chord inside the window lies in a ring torus's hole
+    // (hole.h): no root there.
     const double limit = hole_limit(f.major(), f.minor());
     const auto rho2_at = [&](double s) {
       const double x = o[0].hi + (s * d[0] + o[0].lo), y = o[1].hi + (s * d[1] + o[1].lo);
       return x * x + y * y;
     };
-    if (rho2_at(lo) < limit && rho2_at(hi) < limit) return 0;
+    if (rho2_at(std::max(lo, s_min)) < limit && rho2_at(std::min(hi, s_max)) < limit) return 0;
   }
 
   // Breakpoints of convexity: the axis crossing when K = 0 (a kink of rho),

@@ -192,6 +192,18 @@ TEST(TorusIntersect, RaysJustOutsideTheHoleKeepTheirRoots) {
   EXPECT_NEAR(wall.t[0], 1, 1e-12);  // (0.75, 0, 0), the inner equator, is on the surface
 }
 
+TEST(TorusIntersect, AWindowInsideTheHoleHoldsNoRoot) {
+  const double o[3] = {0, 0, 0}, d[3] = {1, 0, 0};  // roots at -1.25, -0.75, 0.75, 1.25
+  double t = 0;
+  EXPECT_FALSE(intersect_torus_nearest(1, 0.25, o, d, 0, 0.5, &t));
+  EXPECT_FALSE(torus_blocks(1, 0.25, o, d, -0.5, 0.5));
+  ASSERT_TRUE(intersect_torus_nearest(1, 0.25, o, d, 0.5, 1, &t));
+  EXPECT_DOUBLE_EQ(t, 0.75);
+  ASSERT_TRUE(intersect_torus_nearest(1, 0.25, o, d, -1, -0.5, &t));
+  EXPECT_DOUBLE_EQ(t, -0.75);
+  EXPECT_TRUE(torus_blocks(1, 0.25, o, d, 0, 0.76));
+}
+
 TEST(TorusIntersect, RaysThroughTheHoleMiss) {
   EXPECT_EQ(roots(1, 0.25, {0.75 - 1e-9, 0, -5}, {0, 0, 1}).n, 0);
   EXPECT_EQ(roots(1, 0.25, {0.3, -0.2, 3}, {-0.1, 0.05, -1}).n, 0);
