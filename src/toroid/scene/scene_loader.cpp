@@ -165,22 +165,17 @@ void report_warnings(LoadState& state) {
 Scene load_scene_from_string(const std::string& text, const std::string& source, const std::filesystem::path& base_dir,
                              const SceneLoadOptions& options) {
   if (!options.whole_document) {
-    std::optional<YamlItems> items;
-    try {
-      items = split_items(text);
-    } catch (const YAML::Exception& e) {
-      throw SceneError(format_yaml_error(source, e));
-    }
-    if (items) {
-      // When the items do not load alone, the whole document's load below
+    if (const std::optional<YamlItems> items = split_items(text)) {
+      // When the items do not load alone, or an item is wrong, the whole
+      // document's load below decides: a syntax error anywhere in the file
+      // comes before an item's mistake, as YAML::Load reports it first. It
       // finds the same warnings again: these are dropped.
       LoadState state(source, base_dir, options);
       std::optional<Scene> scene;
       try {
         scene = load_items(state, *items);
       } catch (const SceneError&) {
-        report_warnings(state);
-        throw;
+        scene.reset();
       }
       if (scene) {
         report_warnings(state);

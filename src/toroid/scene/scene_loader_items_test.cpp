@@ -74,6 +74,30 @@ TEST(SceneLoaderItems, AnErrorInADefineHasTheDefinesPositionWhereALaterItemUsesI
                          "s.yml:24:13: undefined material 'shiney' (did you mean 'shiny'?)");
 }
 
+// A syntax error anywhere in the file is reported before an earlier item's
+// mistake, as the whole document's YAML::Load finds it first.
+TEST(SceneLoaderItems, ASyntaxErrorLaterInTheFileComesFirst) {
+  const std::string text = kCamera +
+                           "- add: sphere\n"                    // 12
+                           "  colr: [1, 0, 0]\n"                // 13: an unknown key
+                           "- add: cube\n"                      // 14
+                           "  transform: [[scale, 1, 1, 1]\n";  // 15: an unterminated list
+  const std::string whole = error_of(text, true);
+  EXPECT_NE(whole.find("YAML syntax error"), std::string::npos) << whole;
+  EXPECT_EQ(error_of(text, false), whole);
+}
+
+// A quoted scalar running on to a line that starts like an item: the item
+// is read as the whole document reads it ("re - d"), not cut there.
+TEST(SceneLoaderItems, AQuotedNameOverSeveralLinesIsReadWhole) {
+  const std::string text = kCamera +
+                           "- add: sphere\n"     // 12
+                           "  material: \"re\n"  // 13
+                           "- d\"\n";            // 14
+  EXPECT_EQ(error_of(text, true), "s.yml:13:13: undefined material 're - d'");
+  EXPECT_EQ(error_of(text, false), error_of(text, true));
+}
+
 TEST(SceneLoaderItems, AnErrorAboutTheWholeListHasTheListsPosition) {
   expect_error_both_ways(
       "# no camera\n"

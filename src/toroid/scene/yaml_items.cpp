@@ -1,9 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "toroid/scene/yaml_items.h"
 
-#include <yaml-cpp/eventhandler.h>
-#include <yaml-cpp/parser.h>
-
 #include <istream>
 #include <streambuf>
 
@@ -20,94 +17,104 @@ class TextBuffer : public std::streambuf {
   }
 };
 
-// Records where the top node and the nodes of its items start; builds nothing.
-class ItemFinder : public YAML::EventHandler {
- public:
-  bool top_is_block_list = false;
-  bool has_alias = false;
-  YAML::Mark list;
-  std::vector<YAML::Mark> items;
-
-  void OnDocumentStart(const YAML::Mark&) override {}
-  void OnDocumentEnd() override {}
-  void OnNull(const YAML::Mark& mark, YAML::anchor_t) override { node(mark); }
-  void OnAlias(const YAML::Mark& mark, YAML::anchor_t) override {
-    has_alias = true;
-    node(mark);
-  }
-  void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t, const std::string&) override { node(mark); }
-  void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
-                       YAML::EmitterStyle::value style) override {
-    if (depth_ == 0 && style == YAML::EmitterStyle::Block) {
-      top_is_block_list = true;
-      list = mark;
-    }
-    node(mark);
-    ++depth_;
-  }
-  void OnSequenceEnd() override { --depth_; }
-  void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
-    node(mark);
-    ++depth_;
-  }
-  void OnMapEnd() override { --depth_; }
-
- private:
-  void node(const YAML::Mark& mark) {
-    if (depth_ == 1) items.push_back(mark);
-  }
-  int depth_ = 0;
-};
-
 bool starts_document_marker(std::string_view line) {
   return (line.starts_with("---") || line.starts_with("...")) &&
          (line.size() == 3 || line[3] == ' ' || line[3] == '\t' || line[3] == '\r' || line[3] == '\n');
 }
 
+// Whether `c` ends a line's content: the line's end, or a comment.
+bool ends_content(char c) { return c == '\n' || c == '\r' || c == '#'; }
+
+// Whether the quoted scalar whose opening quote is at text[pos] closes
+// inside `text`: yaml-cpp takes a quoted scalar that runs to the end of its
+// input as ended there, so an item cut inside one (split_items cut it at a
+// line that only looks like an item start) would load, wrongly.
+bool quote_closes(std::string_view text, std::size_t pos) {
+  const char quote = text[pos];
+  for (std::size_t i = pos + 1; i < text.size(); ++i) {
+    if (quote == '"' && text[i] == '\\') {
+      ++i;  // an escape: the next character is not the end
+    } else if (text[i] == quote) {
+      if (quote == '\'' && i + 1 < text.size() && text[i + 1] == '\'') {
+        ++i;  // '' stands for one quote
+      } else {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// Whether every scalar of `node` that is not plain is a block scalar or a
+// quoted one that closes inside `text`; false also for an explicitly tagged
+// or anchored one, whose style its mark does not show.
+bool scalars_end_inside(const YAML::Node& node, std::string_view text) {
+  switch (node.Type()) {
+    case YAML::NodeType::Scalar: {
+      if (node.Tag() == "?") return true;  // plain
+      const std::size_t pos = static_cast<std::size_t>(node.Mark().pos);
+      if (pos >= text.size()) return false;
+      const char c = text[pos];
+      if (c == '|' || c == '>') return true;
+      return (c == '"' || c == '\'') && quote_closes(text, pos);
+    }
+    case YAML::NodeType::Sequence:
+      for (const YAML::Node& child : node)
+        if (!scalars_end_inside(child, text)) return false;
+      return true;
+    case YAML::NodeType::Map:
+      for (const auto& entry : node)
+        if (!scalars_end_inside(entry.first, text) || !scalars_end_inside(entry.second, text)) return false;
+      return true;
+    default: return true;
+  }
+}
+
 }  // namespace
 
 std::optional<YamlItems> split_items(std::string_view text) {
-  ItemFinder finder;
-  {
-    TextBuffer buffer(text);
-    std::istream in(&buffer);
-    YAML::Parser parser(in);
-    if (!parser.HandleNextDocument(finder)) return std::nullopt;  // an empty document
-  }
-  if (!finder.top_is_block_list || finder.has_alias || finder.items.empty()) return std::nullopt;
-
-  // yaml-cpp counts lines at '\n' and columns in bytes (UTF-8). Each item's
-  // '-' must stand at the list's column of the line where its node starts,
-  // after nothing but spaces.
-  const int dash = finder.list.column;
+  // The first line with content must be an item: '-' and a space, after
+  // nothing but spaces; its column is the list's. Every later line with '-'
+  // at that column starts the next item. A line that only looks like an item
+  // start (inside a flow collection or a quoted scalar of the item before)
+  // cuts that item short, so that it does not load alone: load_item refuses
+  // it and the loader reads the whole document instead.
   YamlItems out;
-  out.list = finder.list;
-  std::size_t line_begin = 0;
-  int line = 0;
   std::vector<std::size_t> begins;
-  for (const YAML::Mark& m : finder.items) {
-    if (m.line < line || (!begins.empty() && m.line == line) || m.column <= dash) return std::nullopt;
-    for (; line < m.line; ++line) {
-      line_begin = text.find('\n', line_begin);
-      if (line_begin == std::string_view::npos) return std::nullopt;
-      ++line_begin;
+  int dash = -1;
+  int line = 0;
+  for (std::size_t pos = 0; pos < text.size(); ++line) {
+    const std::size_t newline = text.find('\n', pos);
+    const std::size_t next = newline == std::string_view::npos ? text.size() : newline + 1;
+    const std::string_view l = text.substr(pos, next - pos);
+    if (starts_document_marker(l)) return std::nullopt;  // several documents, or an explicit one
+    const std::size_t indent = l.find_first_not_of(' ');
+    if (indent != std::string_view::npos && !ends_content(l[indent])) {
+      if (dash < 0) {
+        if (l[indent] != '-') return std::nullopt;  // not a block list (or a byte-order mark)
+        dash = static_cast<int>(indent);
+      }
+      if (static_cast<int>(indent) == dash && l[indent] == '-') {
+        // The item's node must start on its '-' line, after a space.
+        if (indent + 1 >= l.size() || l[indent + 1] != ' ') return std::nullopt;
+        const std::size_t node = l.find_first_not_of(' ', indent + 1);
+        if (node == std::string_view::npos || ends_content(l[node])) return std::nullopt;
+        if (begins.empty()) {
+          out.list.pos = static_cast<int>(pos + indent);
+          out.list.line = line;
+          out.list.column = dash;
+        }
+        begins.push_back(pos);
+        out.items.push_back({{}, line, static_cast<int>(node)});
+      }
     }
-    const std::string_view lead = text.substr(line_begin, static_cast<std::size_t>(dash) + 1);
-    if (lead.size() != static_cast<std::size_t>(dash) + 1 || lead.back() != '-' ||
-        lead.find_first_not_of(' ') != static_cast<std::size_t>(dash))
-      return std::nullopt;
-    begins.push_back(line_begin);
-    out.items.push_back({{}, m.line, m.column});
+    pos = next;
   }
+  if (begins.empty()) return std::nullopt;
   for (std::size_t i = 0; i < begins.size(); ++i) {
     const std::size_t end = i + 1 < begins.size() ? begins[i + 1] : text.size();
     out.items[i].text = text.substr(begins[i], end - begins[i]);
   }
-  // The last item runs to the end of the text: a second document there ends
-  // the first one (YAML::Load reads only the first).
-  std::string_view tail = out.items.back().text;
-  for (std::size_t nl = tail.find('\n'); nl != std::string_view::npos; nl = tail.find('\n', nl + 1))
-    if (starts_document_marker(tail.substr(nl + 1))) return std::nullopt;
   return out;
 }
 
@@ -123,6 +130,8 @@ std::optional<YAML::Node> load_item(const YamlItemText& item) {
   if (!list.IsSequence() || list.size() != 1) return std::nullopt;
   const YAML::Node node = list[0];
   if (node.Mark().line != 0 || node.Mark().column != item.column) return std::nullopt;
+  if (item.text.find_first_of("\"'") != std::string_view::npos && !scalars_end_inside(node, item.text))
+    return std::nullopt;
   return node;
 }
 

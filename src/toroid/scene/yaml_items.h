@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The top-level items of a YAML scene one at a time, so that loading a big
 // scene never holds yaml-cpp's node tree of the whole document:
-// split_items() parses the text once without building nodes and finds where
-// each item of the top-level block list is; load_item() builds one item.
+// split_items() cuts the text into items by their lines, without parsing it;
+// load_item() parses and builds one item, and refuses one that does not read
+// as that item alone (then the document is loaded whole).
 #pragma once
 
 #include <yaml-cpp/yaml.h>
@@ -26,11 +27,13 @@ struct YamlItems {
   std::vector<YamlItemText> items;
 };
 
-// The items of a document whose top node is a block list. Returns nullopt for
-// anything else, to be loaded whole with YAML::Load: a flow list, a map, an
-// empty document, aliases (an anchor may be named in another item), several
-// documents, a byte-order mark, an item whose node is not on its '-' line.
-// Throws YAML::Exception for a syntax error, as YAML::Load of `text` does.
+// The items of a document whose first content is a block list item: from
+// each line with '-' and a space at the list's column to the next such line.
+// Returns nullopt for anything else, to be loaded whole with YAML::Load: a
+// flow list, a map, a scalar, an empty document, a document marker ("---",
+// "..."), a byte-order mark, an item whose node is not on its '-' line. It
+// parses nothing: a syntax error, or an alias of another item's anchor,
+// makes that item's load_item fail.
 std::optional<YamlItems> split_items(std::string_view text);
 
 // The node of one item, with the marks of its own text: add `first_line` to
