@@ -75,10 +75,11 @@ bool scalars_end_inside(const YAML::Node& node, std::string_view text) {
 std::optional<YamlItems> split_items(std::string_view text) {
   // The first line with content must be an item: '-' and a space, after
   // nothing but spaces; its column is the list's. Every later line with '-'
-  // at that column starts the next item. A line that only looks like an item
-  // start (inside a flow collection or a quoted scalar of the item before)
-  // cuts that item short, so that it does not load alone: load_item refuses
-  // it and the loader reads the whole document instead.
+  // at that column starts the next item; every other line with content must
+  // stand right of that column. A line that only looks like an item start
+  // (inside a flow collection or a quoted scalar of the item before) cuts
+  // that item short, so that it does not load alone: load_item refuses it
+  // and the loader reads the whole document instead.
   YamlItems out;
   std::vector<std::size_t> begins;
   int dash = -1;
@@ -94,7 +95,13 @@ std::optional<YamlItems> split_items(std::string_view text) {
         if (l[indent] != '-') return std::nullopt;  // not a block list (or a byte-order mark)
         dash = static_cast<int>(indent);
       }
-      if (static_cast<int>(indent) == dash && l[indent] == '-') {
+      if (static_cast<int>(indent) < dash || (static_cast<int>(indent) == dash && l[indent] != '-')) {
+        // Content at or left of the list's column that is not an item:
+        // yaml-cpp may end the document there, or read on into the next
+        // item, where an item alone would not.
+        return std::nullopt;
+      }
+      if (static_cast<int>(indent) == dash) {
         // The item's node must start on its '-' line, after a space.
         if (indent + 1 >= l.size() || l[indent + 1] != ' ') return std::nullopt;
         const std::size_t node = l.find_first_not_of(' ', indent + 1);

@@ -33,12 +33,12 @@ TEST(SplitItems, FindsEachItemsLinesFromItsDashToTheNextItem) {
   EXPECT_EQ(items->items[2].first_line, 7);
 }
 
-TEST(SplitItems, TakesAnIndentedListAndAFlowValueSpanningLines) {
-  const auto items = split_items("  - a: [1,\n2]\n  - b\n");
+TEST(SplitItems, TakesAnIndentedList) {
+  const auto items = split_items("  - a: [1,\n     2]\n  - b\n");
   ASSERT_TRUE(items);
   EXPECT_EQ(items->list.column, 2);
   ASSERT_EQ(items->items.size(), 2u);
-  EXPECT_EQ(items->items[0].text, "  - a: [1,\n2]\n");
+  EXPECT_EQ(items->items[0].text, "  - a: [1,\n     2]\n");
   EXPECT_EQ(items->items[0].column, 4);
   EXPECT_EQ(items->items[1].text, "  - b\n");
   EXPECT_EQ(items->items[1].first_line, 2);
@@ -56,6 +56,8 @@ TEST(SplitItems, LeavesEveryOtherDocumentToBeLoadedWhole) {
       "- a\n---\n- b\n",                   // a second document
       "- a\n...\n",                        // the end of the document
       "\xEF\xBB\xBF- a\n- b\n",            // a byte-order mark
+      "  - a: [1,\n2]\n  - b\n",           // a line left of the list's column (yaml-cpp reads on)
+      "- a: x\nQ y\n- b\n",                // a line at the list's column that is no item (yaml-cpp stops)
   };
   for (const char* text : whole) {
     SCOPED_TRACE(text);
