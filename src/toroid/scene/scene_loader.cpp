@@ -175,7 +175,7 @@ Scene load_scene_from_string(const std::string& text, const std::string& source,
       try {
         scene = load_items(state, *items);
       } catch (const SceneError&) {
-        scene.reset();
+        // left to the whole document's load below
       }
       if (scene) {
         report_warnings(state);

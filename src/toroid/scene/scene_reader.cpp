@@ -3,12 +3,12 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <set>
 #include <sstream>
 
+#include "toroid/io/number_text.h"
 #include "toroid/scene/scene_loader.h"
 
 namespace toroid {
@@ -106,36 +106,16 @@ std::vector<Entry> SceneReader::entries(const YAML::Node& map, const std::string
 
 namespace {
 
-// A plain decimal ("-12", "0.5", "3e-2": digits, at most one '.', an
-// exponent) read with from_chars, which rounds as the stream that
-// YAML::convert uses does (both correctly), without building a stream.
-// False for any other text, and for a value that over- or underflows: those
-// go to YAML::convert.
+// A decimal read_finite_double takes ("-12", "0.5", "3e-2") without
+// building a stream: from_chars rounds as the stream of YAML::convert does
+// (both correctly). False, for YAML::convert to decide as before, for a
+// leading '+' (read_finite_double would take "+-1"), and for a value that
+// under- or overflows.
 bool read_plain_decimal(const std::string& text, double& v) {
-  std::size_t i = text.starts_with('-') ? 1 : 0;
-  const std::size_t digits_from = i;
-  bool point = false, nonzero = false;
-  for (; i < text.size() && text[i] != 'e' && text[i] != 'E'; ++i) {
-    const char c = text[i];
-    if (c == '.' && !point) {
-      point = true;
-    } else if (c >= '0' && c <= '9') {
-      nonzero = nonzero || c != '0';
-    } else {
-      return false;
-    }
-  }
-  if (i == digits_from || (point && i == digits_from + 1)) return false;  // no digit
-  if (i < text.size()) {                                                  // the exponent: a sign, then digits
-    std::size_t j = i + 1;
-    if (j < text.size() && (text[j] == '-' || text[j] == '+')) ++j;
-    if (j == text.size()) return false;
-    for (; j < text.size(); ++j)
-      if (text[j] < '0' || text[j] > '9') return false;
-  }
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  return ec == std::errc() && ptr == end && (nonzero ? std::isnormal(v) : v == 0);
+  if (text.starts_with('+') || read_finite_double(text, v) != NumberText::Ok) return false;
+  if (v != 0) return std::isnormal(v);
+  const std::string_view mantissa = std::string_view(text).substr(0, text.find_first_of("eE"));
+  return mantissa.find_first_of("123456789") == std::string_view::npos;  // a true zero
 }
 
 }  // namespace
