@@ -51,7 +51,11 @@ __global__ void torus_batch_kernel(double major, double minor, std::size_t n, co
       TOROID_CUDA_NAMESPACE::intersect_torus_row(major, minor, origins + 3 * i, directions + 3 * i, roots + 4 * i);
 }
 
-constexpr unsigned kThreadsPerBlock = 128;
+// Threads per block; a build may set another (tools/gpu-check.sh's variants).
+#ifndef TOROID_CUDA_THREADS_PER_BLOCK
+#define TOROID_CUDA_THREADS_PER_BLOCK 128
+#endif
+constexpr unsigned kThreadsPerBlock = TOROID_CUDA_THREADS_PER_BLOCK;
 
 // Launches the kernel on device pointers; the error of the launch.
 cudaError_t launch_torus_batch(double major, double minor, std::size_t n, const double* origins,

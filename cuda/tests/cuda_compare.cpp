@@ -94,6 +94,7 @@ Difference compare(const Answers& a, const Answers& b) {
       ++d.roots_differ;
       const std::uint64_t u = ulps_apart(x, y);
       if (u > d.max_ulps) d.max_ulps = u;
+      if (std::abs(x - y) > d.max_abs) d.max_abs = std::abs(x - y);
     }
     if (row) ++d.rows_differ;
   }

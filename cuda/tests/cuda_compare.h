@@ -42,7 +42,8 @@ struct Difference {
   std::size_t counts_differ = 0;  // rays whose counts differ
   std::size_t rows_differ = 0;    // rays with equal counts and a root of other bits
   std::size_t roots_differ = 0;   // such roots
-  std::uint64_t max_ulps = 0;     // the largest distance among them
+  std::uint64_t max_ulps = 0;     // the largest distance among them in ulps
+  double max_abs = 0;             // and in t (ulps mislead across 0)
 };
 Difference compare(const Answers& a, const Answers& b);
 

@@ -27,6 +27,7 @@
 #include <limits>
 #include <memory>
 
+#include "toroid/math/cube_root.h"
 #include "toroid/torus/batch.h"
 #include "toroid/torus/checked.h"
 #include "toroid/torus/hole.h"
@@ -340,10 +341,10 @@ class BatchSolver {
     VD concave_lo = zero, concave_hi = zero;
     VM cut_lo = splat(1.0) == zero, cut_hi = cut_lo;
     if (concave_lanes != 0) {
-      alignas(64) double cube_root[kWidth] = {}, rho_i3_l[kWidth];
+      alignas(64) double roots_l[kWidth] = {}, rho_i3_l[kWidth];
       store(rho_i3_l, rho_i3);
-      for_each_lane(concave_lanes, [&](int l) { cube_root[l] = std::cbrt(rho_i3_l[l]); });
-      const VD rho_i = load(cube_root);
+      for_each_lane(concave_lanes, [&](int l) { roots_l[l] = cube_root(rho_i3_l[l]); });
+      const VD rho_i = load(roots_l);
       // Where the concave stretch is too narrow for rho's rounding, the
       // scalar code cuts the axis passage as a kink (intersect.cpp's
       // kAxisBlur, 2^-32): those rays go to it.

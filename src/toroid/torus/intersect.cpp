@@ -26,6 +26,7 @@
 //     relative to the original origin.
 #include "toroid/torus/intersect.h"
 
+#include "toroid/math/cube_root.h"
 #include "toroid/math/double_double.h"
 #include "toroid/roots/monotone.h"
 #include "toroid/roots/polynomial.h"
@@ -407,8 +408,8 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       // For a ray that passes within ~1e-50 torus sizes of the axis the
       // square and the cube underflow: then the roots themselves decide.
       const double square = rho_i3 * rho_i3;
-      if (square > rho_min2 * rho_min2 * rho_min2 || (square < 0x1p-1000 && std::cbrt(rho_i3) > std::sqrt(rho_min2))) {
-        const double rho_i = std::cbrt(rho_i3);
+      if (square > rho_min2 * rho_min2 * rho_min2 || (square < 0x1p-1000 && cube_root(rho_i3) > std::sqrt(rho_min2))) {
+        const double rho_i = cube_root(rho_i3);
         if (rho_i > blur) {
           const double hw = std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c());
           concave_lo = s_axis - hw;
