@@ -341,10 +341,24 @@ class BatchSolver {
     VD concave_lo = zero, concave_hi = zero;
     VM cut_lo = splat(1.0) == zero, cut_hi = cut_lo;
     if (concave_lanes != 0) {
-      alignas(64) double roots_l[kWidth] = {}, rho_i3_l[kWidth];
-      store(rho_i3_l, rho_i3);
-      for_each_lane(concave_lanes, [&](int l) { roots_l[l] = cube_root(rho_i3_l[l]); });
-      const VD rho_i = load(roots_l);
+      // cube_root on the vector: the seeds lane by lane, the iteration on
+      // all lanes at once; a lane outside the iteration's range takes the
+      // scalar cube_root (the other lanes' values are not used).
+      alignas(64) double a_l[kWidth], seed_l[kWidth], roots_l[kWidth];
+      store(a_l, rho_i3);
+      unsigned outside = 0;
+      for (int l = 0; l < kWidth; ++l) {
+        const bool in_range = a_l[l] >= 0x1p-900 && a_l[l] <= 0x1p900;
+        if (!in_range) outside |= 1u << l, a_l[l] = 1;
+        seed_l[l] = cube_root_seed(a_l[l]);
+      }
+      VD rho_i = cube_root_refine(load(a_l), load(seed_l));
+      if ((outside & concave_lanes) != 0) {
+        store(roots_l, rho_i);
+        store(a_l, rho_i3);
+        for_each_lane(outside & concave_lanes, [&](int l) { roots_l[l] = cube_root(a_l[l]); });
+        rho_i = load(roots_l);
+      }
       // Where the concave stretch is too narrow for rho's rounding, the
       // scalar code cuts the axis passage as a kink (intersect.cpp's
       // kAxisBlur, 2^-32): those rays go to it.
