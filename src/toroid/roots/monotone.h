@@ -10,7 +10,9 @@ namespace toroid {
 
 // Root of a monotone function on [lo, hi] whose values at the ends have
 // opposite signs, from the first guess x0 (inside). Newton, guarded by
-// bisection; `f` returns (value, derivative). Stops when a step is below `tol`.
+// bisection; `f` returns (value, derivative). Stops when a step is below `tol`,
+// or leaves x unchanged (x is then an end of the bracket, and the root to
+// x's resolution: bisecting would only lead back to it).
 template <typename F>
 TOROID_HD double solve_monotone(const F& f, double lo, double hi, bool lo_negative, double x0, double tol) {
   double x = x0;
@@ -22,6 +24,7 @@ TOROID_HD double solve_monotone(const F& f, double lo, double hi, bool lo_negati
     else
       hi = x;
     double next = x - v / dv;
+    if (next == x) return x;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // also catches NaN
     const double step = std::abs(next - x);
     x = next;
