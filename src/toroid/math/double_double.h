@@ -32,9 +32,8 @@ TOROID_HD inline double product_error(double a, double b, double p) {
 #if defined(__FMA__) || defined(__CUDA_ARCH__) || defined(__aarch64__)
   return std::fma(a, b, -p);
 #else
-  if (!(std::abs(a) < 0x1p995 && std::abs(b) < 0x1p995 && std::abs(p) < 0x1p995 && std::abs(p) > 0x1p-900) || a == 0 ||
-      b == 0)
-    return std::fma(a, b, -p);
+  if (!(std::abs(a) < 0x1p995 && std::abs(b) < 0x1p995 && std::abs(p) < 0x1p995 && std::abs(p) > 0x1p-900))
+    return std::fma(a, b, -p);  // also a zero factor: p = 0
   constexpr double kSplit = 0x1p27 + 1;
   const double ca = kSplit * a, cb = kSplit * b;
   const double a_hi = ca - (ca - a), a_lo = a - a_hi;
