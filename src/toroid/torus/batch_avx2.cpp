@@ -44,6 +44,18 @@ inline VM operator~(VM a) { return {_mm256_xor_pd(a.m, _mm256_castsi256_pd(_mm25
 inline VD select(VM m, VD a, VD b) { return {_mm256_blendv_pd(b.v, a.v, m.m)}; }
 // Bit l set where lane l of m is set.
 inline unsigned bits(VM m) { return static_cast<unsigned>(_mm256_movemask_pd(m.m)); }
+// The lanes of a set in `lanes`, in order, to dst[0], dst[1], ...; writes
+// kWidth doubles. AVX2 has no compress: a permutation of the vector's 32-bit
+// halves from a table indexed by the lane mask, then one store.
+inline void compress(double* dst, unsigned lanes, VD a) {
+  alignas(32) static constexpr int kOrder[16][8] = {
+      {0, 1, 0, 1, 0, 1, 0, 1}, {0, 1, 0, 1, 0, 1, 0, 1}, {2, 3, 0, 1, 0, 1, 0, 1}, {0, 1, 2, 3, 0, 1, 0, 1},
+      {4, 5, 0, 1, 0, 1, 0, 1}, {0, 1, 4, 5, 0, 1, 0, 1}, {2, 3, 4, 5, 0, 1, 0, 1}, {0, 1, 2, 3, 4, 5, 0, 1},
+      {6, 7, 0, 1, 0, 1, 0, 1}, {0, 1, 6, 7, 0, 1, 0, 1}, {2, 3, 6, 7, 0, 1, 0, 1}, {0, 1, 2, 3, 6, 7, 0, 1},
+      {4, 5, 6, 7, 0, 1, 0, 1}, {0, 1, 4, 5, 6, 7, 0, 1}, {2, 3, 4, 5, 6, 7, 0, 1}, {0, 1, 2, 3, 4, 5, 6, 7}};
+  const __m256i order = _mm256_load_si256(reinterpret_cast<const __m256i*>(kOrder[lanes & 15]));
+  _mm256_storeu_pd(dst, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(a.v), order)));
+}
 
 }  // namespace
 }  // namespace toroid

@@ -49,6 +49,12 @@ inline VM operator~(VM a) { return {static_cast<__mmask8>(~a.m)}; }
 inline VD select(VM m, VD a, VD b) { return {_mm512_mask_blend_pd(m.m, b.v, a.v)}; }
 // Bit l set where lane l of m is set.
 inline unsigned bits(VM m) { return m.m; }
+// The lanes of a set in `lanes`, in order, to dst[0], dst[1], ...; writes
+// kWidth doubles (compressed in a register and stored whole: the store form
+// of the compress instruction is slow on some CPUs).
+inline void compress(double* dst, unsigned lanes, VD a) {
+  _mm512_storeu_pd(dst, _mm512_maskz_compress_pd(static_cast<__mmask8>(lanes), a.v));
+}
 
 }  // namespace
 }  // namespace toroid

@@ -50,7 +50,9 @@ inline void for_each_lane(unsigned lanes, F&& f) {
   }
 }
 
-// The vector of values[index[l]] over the lanes l.
+// The vector of values[index[l]] over the lanes l. (Loads lane by lane:
+// the CPU's gather instructions were slower here, on AMD EPYC with AVX2 and
+// with AVX-512.)
 inline VD gather(const double* values, const int* index) {
   alignas(64) double lanes[kWidth];
   for (int l = 0; l < kWidth; ++l) lanes[l] = values[index[l]];
@@ -66,10 +68,12 @@ struct FactorV {
   VD oh[3], ol[3], d[3], dd, kc;  // kc = -2 R K
 };
 
-// The rays of a chunk that reach stage 2, by column.
+// The rays of a chunk that reach stage 2, by column. Each column of doubles
+// has kWidth spare entries, which compress() may write past the last one.
 struct Candidates {
-  alignas(64) double oh[3][kChunk], ol[3][kChunk], d[3][kChunk];
-  alignas(64) double dd[kChunk], kc[kChunk], lo[kChunk], hi[kChunk], tol_root[kChunk], t_shift[kChunk];
+  static constexpr int kColumn = kChunk + kWidth;
+  alignas(64) double oh[3][kColumn], ol[3][kColumn], d[3][kColumn];
+  alignas(64) double dd[kColumn], kc[kColumn], lo[kColumn], hi[kColumn], tol_root[kColumn], t_shift[kColumn];
   int ray[kChunk];  // its index in the chunk
   bool fallback[kChunk];
   unsigned char found[kChunk];  // bit k: slot k holds a root
@@ -77,21 +81,23 @@ struct Candidates {
   int n;
 };
 
-// Brackets where h changes sign once, for stage 4.
+// Brackets where h changes sign once, for stage 4. The columns of doubles
+// have kWidth spare entries, which compress() may write past the last one.
 struct RootJobs {
   static constexpr int kMax = kChunk * kSlots;
-  double lo[kMax], hi[kMax], x[kMax], tol[kMax];
+  double lo[kMax + kWidth], hi[kMax + kWidth], x[kMax + kWidth], tol[kMax + kWidth];
   bool lo_negative[kMax];
   int candidate[kMax], slot[kMax];
   int n;
 };
 
 // Pieces whose ends have g = sigma h > 0 and a minimum between, for stage 3.
+// Padded to whole vectors with copies of the first job (pad_pairs).
 struct PairJobs {
   static constexpr int kMax = kChunk * 3;
-  double a[4][kMax], b[4][kMax];  // s, h, h', h'' at each end
-  double sigma[kMax];
-  int candidate[kMax], slot[kMax];
+  alignas(64) double a[4][kMax + kWidth], b[4][kMax + kWidth];  // s, h, h', h'' at each end
+  alignas(64) double sigma[kMax + kWidth];
+  int candidate[kMax + kWidth], slot[kMax + kWidth];
   int n;
 };
 
@@ -178,19 +184,14 @@ class BatchSolver {
                   VD hi, VM lo_negative, VD tol_root) {
     const VD x = first_guess(start, lo, hi);
     const VD tol = tol_root * splat(0.5) + splat(2 * kBatchEps) * abs(x);
-    alignas(64) double lo_l[kWidth], hi_l[kWidth], x_l[kWidth], tol_l[kWidth];
-    store(lo_l, lo);
-    store(hi_l, hi);
-    store(x_l, x);
-    store(tol_l, tol);
     const unsigned negative = bits(lo_negative);
     RootJobs& q = ws_.roots;
+    compress(q.lo + q.n, lanes, lo);
+    compress(q.hi + q.n, lanes, hi);
+    compress(q.x + q.n, lanes, x);
+    compress(q.tol + q.n, lanes, tol);
     for_each_lane(lanes, [&](int l) {
       const int j = q.n++;
-      q.lo[j] = lo_l[l];
-      q.hi[j] = hi_l[l];
-      q.x[j] = x_l[l];
-      q.tol[j] = tol_l[l];
       q.lo_negative[j] = (negative >> l) & 1;
       q.candidate[j] = candidate[l];
       q.slot[j] = slot[l] + slot_offset;
@@ -199,18 +200,17 @@ class BatchSolver {
 
   // Stage 1 on rays [base, base + kWidth) of the chunk (those below m).
   void chords(std::size_t base, std::size_t m, const double* origins, const double* directions) {
-    alignas(64) double o_l[3][kWidth], d_l[3][kWidth];
+    int index[kWidth];  // of each lane's ray's x in origins + 3 base, directions + 3 base
     unsigned live = 0;
     for (int l = 0; l < kWidth; ++l) {
-      const std::size_t i = base + l < m ? base + l : base;
       if (base + l < m) live |= 1u << l;
-      for (int k = 0; k < 3; ++k) o_l[k][l] = origins[3 * i + k], d_l[k][l] = directions[3 * i + k];
+      index[l] = base + l < m ? 3 * l : 0;
     }
     VD o[3], d[3];
     VM finite = splat(0.0) == splat(0.0);
     for (int k = 0; k < 3; ++k) {
-      o[k] = load(o_l[k]);
-      d[k] = load(d_l[k]);
+      o[k] = gather(origins + 3 * base + k, index);
+      d[k] = gather(directions + 3 * base + k, index);
       finite = finite & (abs(o[k]) <= splat(std::numeric_limits<double>::max())) &
                (abs(d[k]) <= splat(std::numeric_limits<double>::max()));
     }
@@ -271,24 +271,20 @@ class BatchSolver {
       ws_.state[base + l] = (fallback_lanes >> l) & 1 ? kFallback : (candidate_lanes >> l) & 1 ? kCandidate : kMiss;
     });
     if (candidate_lanes == 0) return;
-    alignas(64) double oh_l[3][kWidth], ol_l[3][kWidth], dd_l[kWidth], lo_l[kWidth], hi_l[kWidth], tol_l[kWidth],
-        shift_l[kWidth];
-    for (int k = 0; k < 3; ++k) store(oh_l[k], oh[k]), store(ol_l[k], ol[k]);
-    store(dd_l, dd);
-    store(lo_l, lo);
-    store(hi_l, hi);
-    store(tol_l, tol_root);
-    store(shift_l, t_shift);
     Candidates& c = ws_.cand;
+    for (int k = 0; k < 3; ++k) {
+      compress(c.oh[k] + c.n, candidate_lanes, oh[k]);
+      compress(c.ol[k] + c.n, candidate_lanes, ol[k]);
+      compress(c.d[k] + c.n, candidate_lanes, d[k]);
+    }
+    compress(c.dd + c.n, candidate_lanes, dd);
+    compress(c.lo + c.n, candidate_lanes, lo);
+    compress(c.hi + c.n, candidate_lanes, hi);
+    compress(c.tol_root + c.n, candidate_lanes, tol_root);
+    compress(c.t_shift + c.n, candidate_lanes, t_shift);
     for_each_lane(candidate_lanes, [&](int l) {
       const int j = c.n++;
-      for (int k = 0; k < 3; ++k) c.oh[k][j] = oh_l[k][l], c.ol[k][j] = ol_l[k][l], c.d[k][j] = d_l[k][l];
-      c.dd[j] = dd_l[l];
       c.kc[j] = 0;  // set in stage 2
-      c.lo[j] = lo_l[l];
-      c.hi[j] = hi_l[l];
-      c.tol_root[j] = tol_l[l];
-      c.t_shift[j] = shift_l[l];
       c.ray[j] = static_cast<int>(base + l);
       c.fallback[j] = false;
       c.found[j] = 0;
@@ -415,18 +411,26 @@ class BatchSolver {
   }
 
   void push_pairs(unsigned lanes, const int* candidate, int slot, const SampleV& a, const SampleV& b, VD sigma) {
-    alignas(64) double a_l[4][kWidth], b_l[4][kWidth], sigma_l[kWidth];
     const VD a_v[4] = {a.s, a.h, a.dh, a.d2h}, b_v[4] = {b.s, b.h, b.dh, b.d2h};
-    for (int k = 0; k < 4; ++k) store(a_l[k], a_v[k]), store(b_l[k], b_v[k]);
-    store(sigma_l, sigma);
     PairJobs& q = ws_.pairs;
+    for (int k = 0; k < 4; ++k) compress(q.a[k] + q.n, lanes, a_v[k]), compress(q.b[k] + q.n, lanes, b_v[k]);
+    compress(q.sigma + q.n, lanes, sigma);
     for_each_lane(lanes, [&](int l) {
       const int j = q.n++;
-      for (int k = 0; k < 4; ++k) q.a[k][j] = a_l[k][l], q.b[k][j] = b_l[k][l];
-      q.sigma[j] = sigma_l[l];
       q.candidate[j] = candidate[l];
       q.slot[j] = slot;
     });
+  }
+
+  // Fills the pair jobs up to a whole vector with copies of the first.
+  void pad_pairs() {
+    PairJobs& q = ws_.pairs;
+    for (int j = q.n; j % kWidth != 0; ++j) {
+      for (int k = 0; k < 4; ++k) q.a[k][j] = q.a[k][0], q.b[k][j] = q.b[k][0];
+      q.sigma[j] = q.sigma[0];
+      q.candidate[j] = q.candidate[0];
+      q.slot[j] = q.slot[0];
+    }
   }
 
   // Stage 3: RootCollector::two_or_none on kWidth pairs at a time. A pair
@@ -436,20 +440,18 @@ class BatchSolver {
     PairJobs& q = ws_.pairs;
     const VD zero = splat(0.0);
     const VD near_tangent = splat(1e-6 * (r_ * r_));
+    pad_pairs();
     for (int base = 0; base < q.n; base += kWidth) {
       unsigned active = 0;
-      int job[kWidth], candidate[kWidth], slot[kWidth];
-      for (int l = 0; l < kWidth; ++l) {
-        job[l] = base + l < q.n ? base + l : base;
+      const int* candidate = q.candidate + base;
+      const int* slot = q.slot + base;
+      for (int l = 0; l < kWidth; ++l)
         if (base + l < q.n) active |= 1u << l;
-        candidate[l] = q.candidate[job[l]];
-        slot[l] = q.slot[job[l]];
-      }
       const FactorV f = factor_of(candidate);
       const VD tol_root = gather(ws_.cand.tol_root, candidate);
-      const VD sigma = gather(q.sigma, job);
-      SampleV a{gather(q.a[0], job), gather(q.a[1], job), gather(q.a[2], job), gather(q.a[3], job), zero};
-      SampleV b{gather(q.b[0], job), gather(q.b[1], job), gather(q.b[2], job), gather(q.b[3], job), zero};
+      const VD sigma = load(q.sigma + base);
+      SampleV a{load(q.a[0] + base), load(q.a[1] + base), load(q.a[2] + base), load(q.a[3] + base), zero};
+      SampleV b{load(q.b[0] + base), load(q.b[1] + base), load(q.b[2] + base), load(q.b[3] + base), zero};
       for (int it = 0; it < 8 && active != 0; ++it) {
         const VD ga = sigma * a.h, gb = sigma * b.h, dga = sigma * a.dh, dgb = sigma * b.dh;
         VD x = (((gb - ga) + dga * a.s) - dgb * b.s) / (dga - dgb);
