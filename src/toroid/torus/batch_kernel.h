@@ -19,9 +19,12 @@
 //  2. the convexity cuts and h at every cut, and each piece's case: one
 //     root (a root search) or none-or-two (a pair search);
 //  3. the pair searches: where the end tangents cross, until the pair is
-//     split or shown empty;
-//  4. the root searches (Halley guarded by bisection); a lane whose search
-//     ends takes the next one, so that no lane idles while work is left.
+//     split or shown empty; where half a vector's pairs or more split at
+//     once, their two roots' searches start there, while the vector holds
+//     their rays, and most end there;
+//  4. the root searches left (Halley guarded by bisection); a lane whose
+//     search ends takes the next one, so that no lane idles while work is
+//     left.
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -68,6 +71,12 @@ struct FactorV {
   VD oh[3], ol[3], d[3], dd, kc;  // kc = -2 R K
 };
 
+// RootSearch's state on kWidth lanes.
+struct SearchV {
+  VD lo, hi, x, tol, iterations;
+  VM lo_negative;
+};
+
 // The rays of a chunk that reach stage 2, by column. Each column of doubles
 // has kWidth spare entries, which compress() may write past the last one.
 struct Candidates {
@@ -81,11 +90,12 @@ struct Candidates {
   int n;
 };
 
-// Brackets where h changes sign once, for stage 4. The columns of doubles
-// have kWidth spare entries, which compress() may write past the last one.
+// Brackets where h changes sign once, for stage 4: RootSearch's state,
+// from its start or after some steps. The columns of doubles have kWidth
+// spare entries, which compress() may write past the last one.
 struct RootJobs {
   static constexpr int kMax = kChunk * kSlots;
-  double lo[kMax + kWidth], hi[kMax + kWidth], x[kMax + kWidth], tol[kMax + kWidth];
+  double lo[kMax + kWidth], hi[kMax + kWidth], x[kMax + kWidth], tol[kMax + kWidth], iterations[kMax + kWidth];
   bool lo_negative[kMax];
   int candidate[kMax], slot[kMax];
   int n;
@@ -182,14 +192,18 @@ class BatchSolver {
   // starts from `start`, as RootSearch's constructor sets it up.
   void push_roots(unsigned lanes, const int* candidate, int slot_offset, const int* slot, const SampleV& start, VD lo,
                   VD hi, VM lo_negative, VD tol_root) {
-    const VD x = first_guess(start, lo, hi);
-    const VD tol = tol_root * splat(0.5) + splat(2 * kBatchEps) * abs(x);
-    const unsigned negative = bits(lo_negative);
+    enqueue(lanes, start_search(start, lo, hi, lo_negative, tol_root), candidate, slot, slot_offset);
+  }
+
+  // Queues the searches of the lanes in `lanes` for stage 4, in their state.
+  void enqueue(unsigned lanes, const SearchV& st, const int* candidate, const int* slot, int slot_offset) {
     RootJobs& q = ws_.roots;
-    compress(q.lo + q.n, lanes, lo);
-    compress(q.hi + q.n, lanes, hi);
-    compress(q.x + q.n, lanes, x);
-    compress(q.tol + q.n, lanes, tol);
+    compress(q.lo + q.n, lanes, st.lo);
+    compress(q.hi + q.n, lanes, st.hi);
+    compress(q.x + q.n, lanes, st.x);
+    compress(q.tol + q.n, lanes, st.tol);
+    compress(q.iterations + q.n, lanes, st.iterations);
+    const unsigned negative = bits(st.lo_negative);
     for_each_lane(lanes, [&](int l) {
       const int j = q.n++;
       q.lo_negative[j] = (negative >> l) & 1;
@@ -465,7 +479,9 @@ class BatchSolver {
         for_each_lane(to_scalar, [&](int l) { ws_.cand.fallback[candidate[l]] = true; });
         active &= ~to_scalar;
         const unsigned split = bits(gm < zero) & active;
-        if (split != 0) {
+        if (2 * __builtin_popcount(split) >= kWidth) {
+          search_pair_roots(split, f, candidate, slot, a, m, b, sigma, tol_root);
+        } else if (split != 0) {
           push_roots(split, candidate, 0, slot, a, a.s, m.s, sigma < zero, tol_root);
           push_roots(split, candidate, 1, slot, b, m.s, b.s, sigma > zero, tol_root);
         }
@@ -482,14 +498,92 @@ class BatchSolver {
     }
   }
 
-  // Stage 4: RootSearch::step on kGroups vectors of searches at a time (the
+  // RootSearch's constructor on every lane: Halley's iteration on (lo, hi)
+  // from `start`'s step.
+  static SearchV start_search(const SampleV& start, VD lo, VD hi, VM lo_negative, VD tol_root) {
+    const VD x = first_guess(start, lo, hi);
+    return {lo, hi, x, tol_root * splat(0.5) + splat(2 * kBatchEps) * abs(x), splat(0.0), lo_negative};
+  }
+
+  // RootSearch::step on every lane. Returns the lanes whose search ends, and
+  // in *to_scalar those where x lies on the axis (the scalar code's case).
+  unsigned step(const FactorV& f, SearchV& st, unsigned* to_scalar) const {
+    const VD zero = splat(0.0);
+    VM rho_zero;
+    const SampleV v = sample(f, st.x, &rho_zero);
+    const VM root_hit = v.h == zero;
+    const VM to_lo = ~((v.h < zero) ^ st.lo_negative);
+    const VD lo = select(to_lo, st.x, st.lo);
+    const VD hi = select(to_lo, st.hi, st.x);
+    const VD step = ((splat(2.0) * v.h) * v.dh) / ((splat(2.0) * v.dh) * v.dh - v.h * v.d2h);
+    VD next_x = st.x - step;
+    // As the scalar RootSearch::step: Halley's step only where it is
+    // close to Newton's, and a step below x's resolution settles x.
+    const VM halley = abs(v.h * v.d2h) <= v.dh * v.dh;
+    const VM settled = halley & (next_x == st.x);
+    const VM inside = halley & (next_x > lo) & (next_x < hi);
+    next_x = select(inside, next_x, splat(0.5) * (lo + hi));
+    const VD qv = v.d2h / (splat(2.0) * v.dh);
+    const VD cv = abs(qv * qv - v.d3h / (splat(6.0) * v.dh));
+    const VM converged = inside & ((cv * (step * step)) * abs(step) <= splat(0.25) * st.tol);
+    const VD moved = abs(next_x - st.x);
+    st.iterations = st.iterations + splat(1.0);
+    const VM stays = root_hit | settled;
+    const VM done = stays | converged | (moved <= st.tol) | (hi - lo <= st.tol) | (st.iterations == splat(100.0));
+    st.lo = select(root_hit, st.lo, lo);
+    st.hi = select(root_hit, st.hi, hi);
+    st.x = select(stays, st.x, next_x);
+    *to_scalar = bits(rho_zero);
+    return bits(done | rho_zero);
+  }
+
+  // A finished search's answer: its root in its slot, or its ray to the
+  // scalar code.
+  void finish(int candidate, int slot, double x, bool to_scalar) {
+    Candidates& c = ws_.cand;
+    if (to_scalar) {
+      c.fallback[candidate] = true;
+    } else {
+      c.roots[candidate][slot] = x;
+      c.found[candidate] |= 1u << slot;
+    }
+  }
+
+  // The two root searches of the pairs split at m, on the lanes `split`,
+  // while their factor is at hand: RootCollector::root_pair's two searches
+  // side by side for kPairSteps steps, which end most; the rest go to stage 4.
+  void search_pair_roots(unsigned split, const FactorV& f, const int* candidate, const int* slot, const SampleV& a,
+                         const SampleV& m, const SampleV& b, VD sigma, VD tol_root) {
+    constexpr int kPairSteps = 2;
+    const VD zero = splat(0.0);
+    SearchV st[2] = {start_search(a, a.s, m.s, sigma < zero, tol_root),
+                     start_search(b, m.s, b.s, sigma > zero, tol_root)};
+    unsigned open[2] = {split, split};
+    for (int it = 0; it < kPairSteps; ++it) {
+      for (int k = 0; k < 2; ++k) {
+        if (open[k] == 0) continue;
+        unsigned to_scalar;
+        const unsigned ended = step(f, st[k], &to_scalar) & open[k];
+        if (ended == 0) continue;
+        alignas(64) double x_l[kWidth];
+        store(x_l, st[k].x);
+        for_each_lane(ended, [&](int l) { finish(candidate[l], slot[l] + k, x_l[l], (to_scalar >> l) & 1); });
+        open[k] &= ~ended;
+      }
+    }
+    for (int k = 0; k < 2; ++k)
+      if (open[k] != 0) enqueue(open[k], st[k], candidate, slot, k);
+  }
+
+  // Stage 4: the root searches left, kGroups vectors of them at a time (the
   // groups' chains of square roots and divisions overlap), each lane taking
   // the next search as soon as its own ends.
   void root_searches() {
     constexpr int kGroups = 2, kLanes = kGroups * kWidth;
-    constexpr unsigned kAll = (1u << kLanes) - 1, kGroupLanes = (1u << kWidth) - 1;
-    RootJobs& q = ws_.roots;
-    Candidates& c = ws_.cand;
+    constexpr unsigned kAll = (1u << kLanes) - 1;
+    const RootJobs& q = ws_.roots;
+    const Candidates& c = ws_.cand;
+    // Each lane's search and its ray's factor, by column.
     alignas(64) double lo_l[kLanes], hi_l[kLanes], x_l[kLanes], tol_l[kLanes], neg_l[kLanes], it_l[kLanes];
     alignas(64) double oh_l[3][kLanes], ol_l[3][kLanes], d_l[3][kLanes], dd_l[kLanes], kc_l[kLanes];
     int job[kLanes];
@@ -503,12 +597,8 @@ class BatchSolver {
       const int j = next++;
       job[l] = j;
       busy |= 1u << l;
-      lo_l[l] = q.lo[j];
-      hi_l[l] = q.hi[j];
-      x_l[l] = q.x[j];
-      tol_l[l] = q.tol[j];
-      neg_l[l] = q.lo_negative[j] ? 1.0 : 0.0;
-      it_l[l] = 0;
+      lo_l[l] = q.lo[j], hi_l[l] = q.hi[j], x_l[l] = q.x[j], tol_l[l] = q.tol[j];
+      neg_l[l] = q.lo_negative[j] ? 1.0 : 0.0, it_l[l] = q.iterations[j];
       const int k = q.candidate[j];
       for (int i = 0; i < 3; ++i) oh_l[i][l] = c.oh[i][k], ol_l[i][l] = c.ol[i][k], d_l[i][l] = c.d[i][k];
       dd_l[l] = c.dd[k];
@@ -532,53 +622,25 @@ class BatchSolver {
       unsigned finished = 0, to_scalar = 0;
       for (int g = 0; g < kGroups; ++g) {
         const int o = g * kWidth;
-        if (((busy >> o) & kGroupLanes) == 0) continue;
+        if (((busy >> o) & ((1u << kWidth) - 1)) == 0) continue;
         FactorV f;
         for (int i = 0; i < 3; ++i) f.oh[i] = load(oh_l[i] + o), f.ol[i] = load(ol_l[i] + o), f.d[i] = load(d_l[i] + o);
         f.dd = load(dd_l + o);
         f.kc = load(kc_l + o);
-        VD lo = load(lo_l + o), hi = load(hi_l + o), x = load(x_l + o);
-        const VD tol = load(tol_l + o);
-        VM rho_zero;
-        const SampleV v = sample(f, x, &rho_zero);
-        const VM root_hit = v.h == zero;
-        const VM lo_negative = load(neg_l + o) != zero;
-        const VM to_lo = ~((v.h < zero) ^ lo_negative);
-        lo = select(to_lo, x, lo);
-        hi = select(to_lo, hi, x);
-        const VD step = ((splat(2.0) * v.h) * v.dh) / ((splat(2.0) * v.dh) * v.dh - v.h * v.d2h);
-        VD next_x = x - step;
-        // As the scalar RootSearch::step: Halley's step only where it is
-        // close to Newton's, and a step below x's resolution settles x.
-        const VM halley = abs(v.h * v.d2h) <= v.dh * v.dh;
-        const VM settled = halley & (next_x == x);
-        const VM inside = halley & (next_x > lo) & (next_x < hi);
-        next_x = select(inside, next_x, splat(0.5) * (lo + hi));
-        const VD qv = v.d2h / (splat(2.0) * v.dh);
-        const VD cv = abs(qv * qv - v.d3h / (splat(6.0) * v.dh));
-        const VM converged = inside & ((cv * (step * step)) * abs(step) <= splat(0.25) * tol);
-        const VD moved = abs(next_x - x);
-        const VD iterations = load(it_l + o) + splat(1.0);
-        const VM stays = root_hit | settled;
-        const VM done = stays | converged | (moved <= tol) | (hi - lo <= tol) | (iterations == splat(100.0));
-        store(lo_l + o, select(root_hit, load(lo_l + o), lo));
-        store(hi_l + o, select(root_hit, load(hi_l + o), hi));
-        store(x_l + o, select(stays, x, next_x));
-        store(it_l + o, iterations);
-        to_scalar |= bits(rho_zero) << o;
-        finished |= bits(done) << o;
+        SearchV st{load(lo_l + o),  load(hi_l + o), load(x_l + o),
+                   load(tol_l + o), load(it_l + o), load(neg_l + o) != zero};
+        unsigned axis;
+        finished |= step(f, st, &axis) << o;
+        to_scalar |= axis << o;
+        store(lo_l + o, st.lo);
+        store(hi_l + o, st.hi);
+        store(x_l + o, st.x);
+        store(it_l + o, st.iterations);
       }
-      to_scalar &= busy;
-      finished = (finished & busy) | to_scalar;
+      finished &= busy;
       if (finished == 0) continue;
       for_each_lane(finished, [&](int l) {
-        const int j = job[l], k = q.candidate[j];
-        if ((to_scalar >> l) & 1) {
-          c.fallback[k] = true;
-        } else {
-          c.roots[k][q.slot[j]] = x_l[l];
-          c.found[k] |= 1u << q.slot[j];
-        }
+        finish(q.candidate[job[l]], q.slot[job[l]], x_l[l], (to_scalar >> l) & 1);
         take(l);
       });
       if (busy != 0) fill_idle();
