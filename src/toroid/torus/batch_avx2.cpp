@@ -56,6 +56,18 @@ inline void compress(double* dst, unsigned lanes, VD a) {
   const __m256i order = _mm256_load_si256(reinterpret_cast<const __m256i*>(kOrder[lanes & 15]));
   _mm256_storeu_pd(dst, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(a.v), order)));
 }
+// The same for kWidth ints at src: writes kWidth ints. The table lists the
+// lanes set in each mask, in order.
+inline void compress(int* dst, unsigned lanes, const int* src) {
+  alignas(32) static constexpr int kLanes[16][8] = {
+      {0, 0, 0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0, 0, 0}, {1, 0, 0, 0, 0, 0, 0, 0}, {0, 1, 0, 0, 0, 0, 0, 0},
+      {2, 0, 0, 0, 0, 0, 0, 0}, {0, 2, 0, 0, 0, 0, 0, 0}, {1, 2, 0, 0, 0, 0, 0, 0}, {0, 1, 2, 0, 0, 0, 0, 0},
+      {3, 0, 0, 0, 0, 0, 0, 0}, {0, 3, 0, 0, 0, 0, 0, 0}, {1, 3, 0, 0, 0, 0, 0, 0}, {0, 1, 3, 0, 0, 0, 0, 0},
+      {2, 3, 0, 0, 0, 0, 0, 0}, {0, 2, 3, 0, 0, 0, 0, 0}, {1, 2, 3, 0, 0, 0, 0, 0}, {0, 1, 2, 3, 0, 0, 0, 0}};
+  const __m256i v = _mm256_zextsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(src)));
+  const __m256i order = _mm256_load_si256(reinterpret_cast<const __m256i*>(kLanes[lanes & 15]));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(dst), _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(v, order)));
+}
 
 }  // namespace
 }  // namespace toroid

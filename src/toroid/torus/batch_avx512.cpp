@@ -55,6 +55,13 @@ inline unsigned bits(VM m) { return m.m; }
 inline void compress(double* dst, unsigned lanes, VD a) {
   _mm512_storeu_pd(dst, _mm512_maskz_compress_pd(static_cast<__mmask8>(lanes), a.v));
 }
+// The same for kWidth ints at src: writes kWidth ints. (Masked loads and
+// stores of the low eight lanes: GCC 12 warns of the undefined upper half
+// that the 256-bit casts would carry.)
+inline void compress(int* dst, unsigned lanes, const int* src) {
+  const __m512i v = _mm512_maskz_loadu_epi32(0xFF, src);
+  _mm512_mask_storeu_epi32(dst, 0xFF, _mm512_maskz_compress_epi32(static_cast<__mmask16>(lanes & 0xFF), v));
+}
 
 }  // namespace
 }  // namespace toroid

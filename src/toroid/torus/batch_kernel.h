@@ -83,10 +83,10 @@ struct Candidates {
   static constexpr int kColumn = kChunk + kWidth;
   alignas(64) double oh[3][kColumn], ol[3][kColumn], d[3][kColumn];
   alignas(64) double dd[kColumn], kc[kColumn], lo[kColumn], hi[kColumn], tol_root[kColumn], t_shift[kColumn];
-  int ray[kChunk];  // its index in the chunk
-  bool fallback[kChunk];
-  unsigned char found[kChunk];  // bit k: slot k holds a root
-  double roots[kChunk][kSlots];
+  int ray[kColumn];  // its index in the chunk
+  bool fallback[kColumn];
+  unsigned char found[kColumn];  // bit k: slot k holds a root
+  double roots[kColumn][kSlots];
   int n;
 };
 
@@ -96,8 +96,8 @@ struct Candidates {
 struct RootJobs {
   static constexpr int kMax = kChunk * kSlots;
   double lo[kMax + kWidth], hi[kMax + kWidth], x[kMax + kWidth], tol[kMax + kWidth], iterations[kMax + kWidth];
-  bool lo_negative[kMax];
-  int candidate[kMax], slot[kMax];
+  double lo_negative[kMax + kWidth];  // 1 or 0
+  int candidate[kMax + kWidth], slot[kMax + kWidth];
   int n;
 };
 
@@ -115,9 +115,9 @@ struct Workspace {
   Candidates cand;
   RootJobs roots;
   PairJobs pairs;
-  unsigned char state[kChunk];  // per ray of the chunk: kMiss, kCandidate or kFallback
+  int fallback_rays[kChunk + kWidth];  // the rays of the chunk that stage 1 hands to the scalar code
+  int n_fallback;
 };
-constexpr unsigned char kMiss = 0, kCandidate = 1, kFallback = 2;
 
 class BatchSolver {
  public:
@@ -128,6 +128,7 @@ class BatchSolver {
     ws_.cand.n = 0;
     ws_.roots.n = 0;
     ws_.pairs.n = 0;
+    ws_.n_fallback = 0;
     for (std::size_t base = 0; base < m; base += kWidth) chords(base, m, origins, directions);
     pad_candidates();
     for (int base = 0; base < ws_.cand.n; base += kWidth) cuts(base);
@@ -203,13 +204,12 @@ class BatchSolver {
     compress(q.x + q.n, lanes, st.x);
     compress(q.tol + q.n, lanes, st.tol);
     compress(q.iterations + q.n, lanes, st.iterations);
-    const unsigned negative = bits(st.lo_negative);
-    for_each_lane(lanes, [&](int l) {
-      const int j = q.n++;
-      q.lo_negative[j] = (negative >> l) & 1;
-      q.candidate[j] = candidate[l];
-      q.slot[j] = slot[l] + slot_offset;
-    });
+    compress(q.lo_negative + q.n, lanes, select(st.lo_negative, splat(1.0), splat(0.0)));
+    int slot_l[kWidth];
+    for (int l = 0; l < kWidth; ++l) slot_l[l] = slot[l] + slot_offset;
+    compress(q.candidate + q.n, lanes, candidate);
+    compress(q.slot + q.n, lanes, slot_l);
+    q.n += __builtin_popcount(lanes);
   }
 
   // Stage 1 on rays [base, base + kWidth) of the chunk (those below m).
@@ -281,9 +281,12 @@ class BatchSolver {
 
     const unsigned fallback_lanes = bits(fallback) & live;
     const unsigned candidate_lanes = bits(~fallback & ~miss) & live;
-    for_each_lane(live, [&](int l) {
-      ws_.state[base + l] = (fallback_lanes >> l) & 1 ? kFallback : (candidate_lanes >> l) & 1 ? kCandidate : kMiss;
-    });
+    int ray[kWidth];
+    for (int l = 0; l < kWidth; ++l) ray[l] = static_cast<int>(base + l);
+    if (fallback_lanes != 0) {
+      compress(ws_.fallback_rays + ws_.n_fallback, fallback_lanes, ray);
+      ws_.n_fallback += __builtin_popcount(fallback_lanes);
+    }
     if (candidate_lanes == 0) return;
     Candidates& c = ws_.cand;
     for (int k = 0; k < 3; ++k) {
@@ -296,13 +299,13 @@ class BatchSolver {
     compress(c.hi + c.n, candidate_lanes, hi);
     compress(c.tol_root + c.n, candidate_lanes, tol_root);
     compress(c.t_shift + c.n, candidate_lanes, t_shift);
-    for_each_lane(candidate_lanes, [&](int l) {
-      const int j = c.n++;
-      c.kc[j] = 0;  // set in stage 2
-      c.ray[j] = static_cast<int>(base + l);
+    compress(c.ray + c.n, candidate_lanes, ray);
+    for (int j = c.n; j < c.n + kWidth; ++j) {  // (kc is set in stage 2)
       c.fallback[j] = false;
       c.found[j] = 0;
-    });
+      for (int k = 0; k < kSlots; ++k) c.roots[j][k] = 0;
+    }
+    c.n += __builtin_popcount(candidate_lanes);
   }
 
   // Fills the candidates' columns up to a whole vector with copies of the
@@ -429,11 +432,9 @@ class BatchSolver {
     PairJobs& q = ws_.pairs;
     for (int k = 0; k < 4; ++k) compress(q.a[k] + q.n, lanes, a_v[k]), compress(q.b[k] + q.n, lanes, b_v[k]);
     compress(q.sigma + q.n, lanes, sigma);
-    for_each_lane(lanes, [&](int l) {
-      const int j = q.n++;
-      q.candidate[j] = candidate[l];
-      q.slot[j] = slot;
-    });
+    compress(q.candidate + q.n, lanes, candidate);
+    for (int l = 0; l < kWidth; ++l) q.slot[q.n + l] = slot;
+    q.n += __builtin_popcount(lanes);
   }
 
   // Fills the pair jobs up to a whole vector with copies of the first.
@@ -598,7 +599,7 @@ class BatchSolver {
       job[l] = j;
       busy |= 1u << l;
       lo_l[l] = q.lo[j], hi_l[l] = q.hi[j], x_l[l] = q.x[j], tol_l[l] = q.tol[j];
-      neg_l[l] = q.lo_negative[j] ? 1.0 : 0.0, it_l[l] = q.iterations[j];
+      neg_l[l] = q.lo_negative[j], it_l[l] = q.iterations[j];
       const int k = q.candidate[j];
       for (int i = 0; i < 3; ++i) oh_l[i][l] = c.oh[i][k], ol_l[i][l] = c.ol[i][k], d_l[i][l] = c.d[i][k];
       dd_l[l] = c.dd[k];
@@ -652,14 +653,16 @@ class BatchSolver {
   long long write_rows(std::size_t m, const double* origins, const double* directions, int* counts, double* roots) {
     const Candidates& c = ws_.cand;
     long long total = 0;
+    // Every row empty first (most are misses), then the others' rows: no
+    // branch on whether a ray hit, which no predictor foresees.
     for (std::size_t i = 0; i < m; ++i) {
-      if (ws_.state[i] == kMiss) {
-        counts[i] = 0;
-        for (int k = 0; k < 4; ++k) roots[4 * i + k] = kBatchNaN;
-      } else if (ws_.state[i] == kFallback) {
-        counts[i] = intersect_torus_row(R_, r_, origins + 3 * i, directions + 3 * i, roots + 4 * i);
-        total += counts[i];
-      }
+      counts[i] = 0;
+      for (int k = 0; k < 4; ++k) roots[4 * i + k] = kBatchNaN;
+    }
+    for (int f = 0; f < ws_.n_fallback; ++f) {
+      const int i = ws_.fallback_rays[f];
+      counts[i] = intersect_torus_row(R_, r_, origins + 3 * i, directions + 3 * i, roots + 4 * i);
+      total += counts[i];
     }
     for (int j = 0; j < c.n; ++j) {
       const int i = c.ray[j];
@@ -668,9 +671,14 @@ class BatchSolver {
       if (c.fallback[j]) {
         n = intersect_torus_row(R_, r_, origins + 3 * i, directions + 3 * i, row);
       } else {
-        for (int k = 0; k < kSlots && n < 4; ++k)
-          if ((c.found[j] >> k) & 1) row[n++] = c.t_shift[j] + c.roots[j][k];
-        for (int k = n; k < 4; ++k) row[k] = kBatchNaN;
+        // The found slots' roots, in slot order, the first four.
+        double found[kSlots];
+        for (int k = 0; k < kSlots; ++k) {
+          found[n] = c.t_shift[j] + c.roots[j][k];
+          n += (c.found[j] >> k) & 1;
+        }
+        n = n < 4 ? n : 4;
+        for (int k = 0; k < 4; ++k) row[k] = k < n ? found[k] : kBatchNaN;
       }
       counts[i] = n;
       total += n;
