@@ -40,8 +40,8 @@ namespace {
 
 constexpr double kBatchEps = std::numeric_limits<double>::epsilon();
 constexpr double kBatchNaN = std::numeric_limits<double>::quiet_NaN();
-// Rays per chunk: the stages' lists of a chunk stay in the first-level caches.
-constexpr int kChunk = 128;
+// Rays per chunk: the stages' lists of a chunk stay in the second-level caches.
+constexpr int kChunk = 256;
 // Roots per piece (two) times pieces (at most three): a candidate's slots.
 constexpr int kSlots = 6;
 
