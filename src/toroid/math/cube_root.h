@@ -20,8 +20,10 @@ namespace toroid {
 // bits divided by 3 approximate log2(a)/3; the constant re-biases the
 // exponent and centres the error of the mantissa's linear interpolation
 // (under 3.2% either way).
+constexpr std::uint64_t kCubeRootSeedBias = 0x2A9F7893782DA1CEull;
+
 TOROID_HD inline double cube_root_seed(double a) {
-  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(a) / 3 + 0x2A9F7893782DA1CEull);
+  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(a) / 3 + kCubeRootSeedBias);
 }
 
 // cube_root's iteration from the seed y, for a in [2^-900, 2^900]: over any

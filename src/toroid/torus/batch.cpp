@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "toroid/math/cube_root.h"
 #include "toroid/torus/checked.h"
 
 namespace toroid {
@@ -14,6 +15,8 @@ long long intersect_torus_batch_avx2(double major, double minor, std::size_t n, 
                                      const double* directions, int* counts, double* roots);
 long long intersect_torus_batch_avx512(double major, double minor, std::size_t n, const double* origins,
                                        const double* directions, int* counts, double* roots);
+void cube_root_seeds_avx2(std::size_t n, const double* in, double* out);
+void cube_root_seeds_avx512(std::size_t n, const double* in, double* out);
 #endif
 
 namespace {
@@ -70,6 +73,15 @@ long long intersect_torus_batch_on(BatchPath path, double major, double minor, s
 #endif
   (void)path;
   return intersect_torus_batch_scalar(major, minor, n, origins, directions, counts, roots);
+}
+
+void cube_root_seeds_on(BatchPath path, std::size_t n, const double* in, double* out) {
+#if TOROID_BATCH_X86_SIMD
+  if (path == BatchPath::Avx512) return cube_root_seeds_avx512(n, in, out);
+  if (path == BatchPath::Avx2) return cube_root_seeds_avx2(n, in, out);
+#endif
+  (void)path;
+  for (std::size_t i = 0; i < n; ++i) out[i] = cube_root_seed(in[i]);
 }
 
 long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,

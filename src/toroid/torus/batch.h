@@ -32,4 +32,9 @@ BatchPath batch_path_best();
 long long intersect_torus_batch_on(BatchPath path, double major, double minor, std::size_t n, const double* origins,
                                    const double* directions, int* counts, double* roots);
 
+// cube_root_seed (math/cube_root.h) of in[i], for in[i] in [2^-900, 2^900],
+// computed as the path computes it (on its vectors), into out[i]: the tests
+// check each path's against the scalar seed, bit for bit.
+void cube_root_seeds_on(BatchPath path, std::size_t n, const double* in, double* out);
+
 }  // namespace toroid

@@ -44,6 +44,15 @@ inline VM operator~(VM a) { return {_mm256_xor_pd(a.m, _mm256_castsi256_pd(_mm25
 inline VD select(VM m, VD a, VD b) { return {_mm256_blendv_pd(b.v, a.v, m.m)}; }
 // Bit l set where lane l of m is set.
 inline unsigned bits(VM m) { return static_cast<unsigned>(_mm256_movemask_pd(m.m)); }
+// Each lane's bits as a 64-bit unsigned integer: +, -, |, & and shifts by 32.
+inline __m256i as_int(VD a) { return _mm256_castpd_si256(a.v); }
+inline VD as_double(__m256i i) { return {_mm256_castsi256_pd(i)}; }
+inline VD int_add(VD a, VD b) { return as_double(_mm256_add_epi64(as_int(a), as_int(b))); }
+inline VD int_sub(VD a, VD b) { return as_double(_mm256_sub_epi64(as_int(a), as_int(b))); }
+inline VD int_or(VD a, VD b) { return as_double(_mm256_or_si256(as_int(a), as_int(b))); }
+inline VD int_and(VD a, VD b) { return as_double(_mm256_and_si256(as_int(a), as_int(b))); }
+inline VD int_shift_right_32(VD a) { return as_double(_mm256_srli_epi64(as_int(a), 32)); }
+inline VD int_shift_left_32(VD a) { return as_double(_mm256_slli_epi64(as_int(a), 32)); }
 // The lanes of a set in `lanes`, in order, to dst[0], dst[1], ...; writes
 // kWidth doubles. AVX2 has no compress: a permutation of the vector's 32-bit
 // halves from a table indexed by the lane mask, then one store.
@@ -73,5 +82,6 @@ inline void compress(int* dst, unsigned lanes, const int* src) {
 }  // namespace toroid
 
 #define TOROID_BATCH_ENTRY intersect_torus_batch_avx2
+#define TOROID_BATCH_SEED_ENTRY cube_root_seeds_avx2
 #include "toroid/torus/batch_kernel.h"
 #endif

@@ -49,6 +49,15 @@ inline VM operator~(VM a) { return {static_cast<__mmask8>(~a.m)}; }
 inline VD select(VM m, VD a, VD b) { return {_mm512_mask_blend_pd(m.m, b.v, a.v)}; }
 // Bit l set where lane l of m is set.
 inline unsigned bits(VM m) { return m.m; }
+// Each lane's bits as a 64-bit unsigned integer: +, -, |, & and shifts by 32.
+inline __m512i as_int(VD a) { return _mm512_castpd_si512(a.v); }
+inline VD as_double(__m512i i) { return {_mm512_castsi512_pd(i)}; }
+inline VD int_add(VD a, VD b) { return as_double(_mm512_add_epi64(as_int(a), as_int(b))); }
+inline VD int_sub(VD a, VD b) { return as_double(_mm512_sub_epi64(as_int(a), as_int(b))); }
+inline VD int_or(VD a, VD b) { return as_double(_mm512_or_si512(as_int(a), as_int(b))); }
+inline VD int_and(VD a, VD b) { return as_double(_mm512_and_si512(as_int(a), as_int(b))); }
+inline VD int_shift_right_32(VD a) { return as_double(_mm512_maskz_srli_epi64(0xFF, as_int(a), 32)); }
+inline VD int_shift_left_32(VD a) { return as_double(_mm512_maskz_slli_epi64(0xFF, as_int(a), 32)); }
 // The lanes of a set in `lanes`, in order, to dst[0], dst[1], ...; writes
 // kWidth doubles (compressed in a register and stored whole: the store form
 // of the compress instruction is slow on some CPUs).
@@ -67,5 +76,6 @@ inline void compress(int* dst, unsigned lanes, const int* src) {
 }  // namespace toroid
 
 #define TOROID_BATCH_ENTRY intersect_torus_batch_avx512
+#define TOROID_BATCH_SEED_ENTRY cube_root_seeds_avx512
 #include "toroid/torus/batch_kernel.h"
 #endif

@@ -2,7 +2,8 @@
 // The SIMD batch: the default solver's common case (intersect.cpp) on
 // kWidth rays at a time, included by batch_avx2.cpp and batch_avx512.cpp
 // after each defines its vector of doubles VD, its lane mask VM and their
-// operations, and TOROID_BATCH_ENTRY, the entry point's name. Everything
+// operations, and TOROID_BATCH_ENTRY and TOROID_BATCH_SEED_ENTRY, the entry
+// points' names. Everything
 // here has internal linkage, so the two instruction sets never share code.
 //
 // Every lane performs the scalar solver's operations in the scalar order,
@@ -25,8 +26,10 @@
 //  4. the root searches left (Halley guarded by bisection); a lane whose
 //     search ends takes the next one, so that no lane idles while work is
 //     left.
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 
@@ -60,6 +63,32 @@ inline VD gather(const double* values, const int* index) {
   alignas(64) double lanes[kWidth];
   for (int l = 0; l < kWidth; ++l) lanes[l] = values[index[l]];
   return load(lanes);
+}
+
+// A vector whose every lane holds the bit pattern `bits`.
+inline VD splat_bits(std::uint64_t bits) { return splat(std::bit_cast<double>(bits)); }
+
+// cube_root_seed (math/cube_root.h) on every lane, bit for bit: the lane's
+// bits u = hi 2^32 + lo divided by 3 as q 2^32 + (r 2^32 + lo) / 3, with hi
+// = 3 q + r. Each quotient is of integers below 2^34, found in double:
+// y / 3 - 1/3 rounded to the nearest integer is floor(y / 3), since its
+// fraction is 0 or +-1/3 up to rounding far below 1/6. Adding 1.5 2^52
+// rounds a double of magnitude below 2^51 to an integer, whose bits are then
+// those of 1.5 2^52 plus the integer; or-ing an integer below 2^52 into
+// 2^52's bits is 2^52 plus it.
+inline VD cube_root_seed(VD a) {
+  const VD two52 = splat(0x1p52), two52_bits = splat_bits(0x4330000000000000ull);
+  const VD round = splat(0x1.8p52), round_bits = splat_bits(0x4338000000000000ull);
+  const auto to_double = [&](VD i) { return int_or(i, two52_bits) - two52; };
+  const auto to_int = [&](VD d) { return int_sub(d + round, round_bits); };
+  const VD third = splat(1.0 / 3);
+  const auto div3 = [&](VD y) { return ((y * third - third) + round) - round; };
+  const VD hi = to_double(int_shift_right_32(a));
+  const VD lo = to_double(int_and(a, splat_bits(0xFFFFFFFFull)));
+  const VD q = div3(hi);
+  const VD t = (hi - splat(3.0) * q) * splat(0x1p32) + lo;
+  const VD quotient = int_add(int_shift_left_32(to_int(q)), to_int(div3(t)));
+  return int_add(quotient, splat_bits(kCubeRootSeedBias));
 }
 
 struct SampleV {
@@ -354,19 +383,14 @@ class BatchSolver {
     VD concave_lo = zero, concave_hi = zero;
     VM cut_lo = splat(1.0) == zero, cut_hi = cut_lo;
     if (concave_lanes != 0) {
-      // cube_root on the vector: the seeds lane by lane, the iteration on
-      // all lanes at once; a lane outside the iteration's range takes the
-      // scalar cube_root (the other lanes' values are not used).
-      alignas(64) double a_l[kWidth], seed_l[kWidth], roots_l[kWidth];
-      store(a_l, rho_i3);
-      unsigned outside = 0;
-      for (int l = 0; l < kWidth; ++l) {
-        const bool in_range = a_l[l] >= 0x1p-900 && a_l[l] <= 0x1p900;
-        if (!in_range) outside |= 1u << l, a_l[l] = 1;
-        seed_l[l] = cube_root_seed(a_l[l]);
-      }
-      VD rho_i = cube_root_refine(load(a_l), load(seed_l));
+      // cube_root on the vector; a lane outside the iteration's range
+      // takes the scalar cube_root (the other lanes' values are not used).
+      const VM in_range = (splat(0x1p-900) <= rho_i3) & (rho_i3 <= splat(0x1p900));
+      const unsigned outside = ~bits(in_range) & ((1u << kWidth) - 1);
+      const VD a = select(in_range, rho_i3, splat(1.0));
+      VD rho_i = cube_root_refine(a, cube_root_seed(a));
       if ((outside & concave_lanes) != 0) {
+        alignas(64) double a_l[kWidth], roots_l[kWidth];
         store(roots_l, rho_i);
         store(a_l, rho_i3);
         for_each_lane(outside & concave_lanes, [&](int l) { roots_l[l] = cube_root(a_l[l]); });
@@ -706,6 +730,16 @@ long long TOROID_BATCH_ENTRY(double major, double minor, std::size_t n, const do
     total += solver->chunk(m, origins + 3 * base, directions + 3 * base, counts + base, roots + 4 * base);
   }
   return total;
+}
+
+// cube_root_seed on vectors (batch.h: cube_root_seeds_on), for the tests.
+void TOROID_BATCH_SEED_ENTRY(std::size_t n, const double* in, double* out) {
+  for (std::size_t i = 0; i < n; i += kWidth) {
+    alignas(64) double lanes[kWidth];
+    for (int l = 0; l < kWidth; ++l) lanes[l] = i + l < n ? in[i + l] : 1.0;
+    store(lanes, cube_root_seed(load(lanes)));
+    for (int l = 0; l < kWidth && i + l < n; ++l) out[i + l] = lanes[l];
+  }
 }
 
 }  // namespace toroid

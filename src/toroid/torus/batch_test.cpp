@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "toroid/math/cube_root.h"
 #include "toroid/torus/checked.h"
 #include "toroid/torus/intersect.h"
 
@@ -274,6 +275,25 @@ TEST_P(TorusBatch, KnownRowsAndNaNPadding) {
 TEST_P(TorusBatch, EmptyBatchTouchesNothing) {
   EXPECT_EQ(intersect_torus_batch_on(GetParam(), 1, 0.25, 0, nullptr, nullptr, nullptr, nullptr), 0);
   EXPECT_EQ(intersect_torus_batch_on(GetParam(), -1, 0.25, 0, nullptr, nullptr, nullptr, nullptr), -1);
+}
+
+// The cube root's seed, which the SIMD paths compute from the bits with
+// double arithmetic, is the scalar seed's integer division, bit for bit:
+// over the whole range, every exponent, and both ends.
+TEST_P(TorusBatch, CubeRootSeedIsTheScalarSeed) {
+  std::mt19937_64 rng(7);
+  std::vector<double> in;
+  for (int e = -900; e < 900; ++e)
+    for (int k = 0; k < 200; ++k) in.push_back(std::ldexp(1.0 + std::ldexp(static_cast<double>(rng() >> 12), -52), e));
+  for (int e = -900; e <= 900; ++e) {
+    in.push_back(std::ldexp(1.0, e));
+    in.push_back(std::nextafter(std::ldexp(1.0, e + 1), 0.0));
+  }
+  std::vector<double> vector_seeds(in.size());
+  cube_root_seeds_on(GetParam(), in.size(), in.data(), vector_seeds.data());
+  int differ = 0;
+  for (std::size_t i = 0; i < in.size(); ++i) differ += !same_bits(vector_seeds[i], cube_root_seed(in[i]));
+  EXPECT_EQ(differ, 0) << "of " << in.size();
 }
 
 INSTANTIATE_TEST_SUITE_P(Paths, TorusBatch, testing::Values(BatchPath::Scalar, BatchPath::Avx2, BatchPath::Avx512),
