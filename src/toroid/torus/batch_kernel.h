@@ -114,7 +114,8 @@ struct Candidates {
   alignas(64) double dd[kColumn], kc[kColumn], lo[kColumn], hi[kColumn], tol_root[kColumn], t_shift[kColumn];
   int ray[kColumn];  // its index in the chunk
   bool fallback[kColumn];
-  unsigned char found[kColumn];  // bit k: slot k holds a root
+  // Slot k's root, NaN where the slot holds none. The last row is never a
+  // candidate's: stores for lanes that have no root to keep go there.
   double roots[kColumn][kSlots];
   int n;
 };
@@ -331,8 +332,7 @@ class BatchSolver {
     compress(c.ray + c.n, candidate_lanes, ray);
     for (int j = c.n; j < c.n + kWidth; ++j) {  // (kc is set in stage 2)
       c.fallback[j] = false;
-      c.found[j] = 0;
-      for (int k = 0; k < kSlots; ++k) c.roots[j][k] = 0;
+      for (int k = 0; k < kSlots; ++k) c.roots[j][k] = kBatchNaN;
     }
     c.n += __builtin_popcount(candidate_lanes);
   }
@@ -570,8 +570,21 @@ class BatchSolver {
       c.fallback[candidate] = true;
     } else {
       c.roots[candidate][slot] = x;
-      c.found[candidate] |= 1u << slot;
     }
+  }
+
+  // finish() on the lanes `ended` of a vector of searches, whose slots are
+  // slot[l] + k. Every lane stores, those without a root to keep to the
+  // roots' spare last row: no branch on how many ended.
+  void finish_lanes(unsigned ended, unsigned to_scalar, const int* candidate, const int* slot, int k, VD x) {
+    Candidates& c = ws_.cand;
+    alignas(64) double x_l[kWidth];
+    store(x_l, x);
+    const unsigned keep = ended & ~to_scalar;
+    double* const roots = &c.roots[0][0];
+    constexpr int kSpare = (Candidates::kColumn - 1) * kSlots;
+    for (int l = 0; l < kWidth; ++l) roots[(keep >> l) & 1 ? candidate[l] * kSlots + slot[l] + k : kSpare] = x_l[l];
+    for_each_lane(ended & to_scalar, [&](int l) { c.fallback[candidate[l]] = true; });
   }
 
   // The two root searches of the pairs split at m, on the lanes `split`,
@@ -590,9 +603,7 @@ class BatchSolver {
         unsigned to_scalar;
         const unsigned ended = step(f, st[k], &to_scalar) & open[k];
         if (ended == 0) continue;
-        alignas(64) double x_l[kWidth];
-        store(x_l, st[k].x);
-        for_each_lane(ended, [&](int l) { finish(candidate[l], slot[l] + k, x_l[l], (to_scalar >> l) & 1); });
+        finish_lanes(ended, to_scalar, candidate, slot, k, st[k].x);
         open[k] &= ~ended;
       }
     }
@@ -698,8 +709,9 @@ class BatchSolver {
         // The found slots' roots, in slot order, the first four.
         double found[kSlots];
         for (int k = 0; k < kSlots; ++k) {
-          found[n] = c.t_shift[j] + c.roots[j][k];
-          n += (c.found[j] >> k) & 1;
+          const double t = c.roots[j][k];
+          found[n] = c.t_shift[j] + t;
+          n += t == t;
         }
         n = n < 4 ? n : 4;
         for (int k = 0; k < 4; ++k) row[k] = k < n ? found[k] : kBatchNaN;
