@@ -78,6 +78,21 @@ inline void compress(int* dst, unsigned lanes, const int* src) {
   _mm_storeu_si128(reinterpret_cast<__m128i*>(dst), _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(v, order)));
 }
 
+// A row from a candidate's six slots (NaN where a slot holds no root): the
+// slots' roots plus shift, in slot order, the first four, NaN after them.
+// Returns how many it wrote. (Scalar: the six slots span two vectors here.)
+inline int first_roots(const double* slots, double shift, double* row) {
+  double found[6];
+  int n = 0;
+  for (int k = 0; k < 6; ++k) {
+    found[n] = shift + slots[k];
+    n += slots[k] == slots[k];
+  }
+  n = n < 4 ? n : 4;
+  for (int k = 0; k < 4; ++k) row[k] = k < n ? found[k] : __builtin_nan("");
+  return n;
+}
+
 }  // namespace
 }  // namespace toroid
 

@@ -72,6 +72,18 @@ inline void compress(int* dst, unsigned lanes, const int* src) {
   _mm512_mask_storeu_epi32(dst, 0xFF, _mm512_maskz_compress_epi32(static_cast<__mmask16>(lanes & 0xFF), v));
 }
 
+// A row from a candidate's six slots (NaN where a slot holds no root): the
+// slots' roots plus shift, in slot order, the first four, NaN after them.
+// Returns how many it wrote.
+inline int first_roots(const double* slots, double shift, double* row) {
+  const __m512d v = _mm512_maskz_loadu_pd(0x3F, slots);
+  const __mmask8 found = _mm512_mask_cmp_pd_mask(0x3F, v, v, _CMP_ORD_Q);
+  const __m512d t = _mm512_add_pd(_mm512_set1_pd(shift), v);
+  _mm512_mask_storeu_pd(row, 0xF, _mm512_mask_compress_pd(_mm512_set1_pd(__builtin_nan("")), found, t));
+  const int n = __builtin_popcount(found);
+  return n < 4 ? n : 4;
+}
+
 }  // namespace
 }  // namespace toroid
 

@@ -47,6 +47,7 @@ constexpr double kBatchNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kChunk = 256;
 // Roots per piece (two) times pieces (at most three): a candidate's slots.
 constexpr int kSlots = 6;
+static_assert(kSlots == 6, "first_roots (the instruction sets' files) reads six slots");
 
 template <class F>
 inline void for_each_lane(unsigned lanes, F&& f) {
@@ -706,15 +707,7 @@ class BatchSolver {
       if (c.fallback[j]) {
         n = intersect_torus_row(R_, r_, origins + 3 * i, directions + 3 * i, row);
       } else {
-        // The found slots' roots, in slot order, the first four.
-        double found[kSlots];
-        for (int k = 0; k < kSlots; ++k) {
-          const double t = c.roots[j][k];
-          found[n] = c.t_shift[j] + t;
-          n += t == t;
-        }
-        n = n < 4 ? n : 4;
-        for (int k = 0; k < 4; ++k) row[k] = k < n ? found[k] : kBatchNaN;
+        n = first_roots(c.roots[j], c.t_shift[j], row);
       }
       counts[i] = n;
       total += n;
