@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Prints the accuracy table of every solver on every ray family
-// (docs/torus.md shows its output). Usage: accuracy_report [rays-per-family]
+// (docs/torus.md shows its output), and the default solver's through each
+// SIMD batch path this CPU has. Usage: accuracy_report [rays-per-family]
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 #include "accuracy/harness.h"
 
@@ -20,13 +22,16 @@ int main(int argc, char** argv) {
   std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const Family& f : make_families(n)) {
     const ReferenceSet ref = compute_references(f);
-    for (TorusSolver s : {TorusSolver::Default, TorusSolver::Ferrari, TorusSolver::Tianheng}) {
-      const Metrics m = measure(f, ref, s);
+    const auto row = [&](const std::string& solver, const Metrics& m) {
       std::printf("| %s | %s | %d | %d | %d | %d | %d | %d | %.1e | %.1e | %.1e | %d/%d |\n", f.name.c_str(),
-                  std::string(solver_name(s)).c_str(), m.rays, m.reference_roots, m.missed - m.missed_subvisible,
-                  m.missed_subvisible, m.spurious, m.extra, m.p50, m.p99, m.max, m.grazing_pairs_found,
-                  m.grazing_pairs);
-    }
+                  solver.c_str(), m.rays, m.reference_roots, m.missed - m.missed_subvisible, m.missed_subvisible,
+                  m.spurious, m.extra, m.p50, m.p99, m.max, m.grazing_pairs_found, m.grazing_pairs);
+    };
+    for (TorusSolver s : {TorusSolver::Default, TorusSolver::Ferrari, TorusSolver::Tianheng})
+      row(std::string(solver_name(s)), measure(f, ref, s));
+    // The default solver through the batch's SIMD paths this CPU has.
+    for (BatchPath p : {BatchPath::Avx2, BatchPath::Avx512})
+      if (batch_path_available(p)) row(std::string("default, batch ") + batch_path_name(p), measure(f, ref, p));
     std::fflush(stdout);
   }
   return 0;

@@ -25,10 +25,7 @@ const std::vector<Family>& families() {
   return f;
 }
 
-TEST_P(AccuracyBars, DefaultSolverMeetsTheBars) {
-  const Family& f = families()[GetParam()];
-  const Metrics m = measure(f, compute_references(f), TorusSolver::Default);
-  SCOPED_TRACE(f.name);
+void expect_bars(const Family& f, const Metrics& m) {
   EXPECT_GT(m.reference_roots, f.rays.size() / 2) << "family should mostly hit the torus";
   // Every missed root counts, those of sub-visible grazing pairs too: a
   // solver that dropped every near-tangent pair must fail here.
@@ -43,6 +40,24 @@ TEST_P(AccuracyBars, DefaultSolverMeetsTheBars) {
   for (const std::string& v : bar_violations(f, m)) ADD_FAILURE() << v;
   if (f.name == "grazing") {
     EXPECT_GT(m.grazing_pairs, 100) << "the grazing family must hold grazing pairs";
+  }
+}
+
+// The default solver, one ray at a time and through every batch path this
+// CPU has (the batch's rows are the single-ray call's bits, so its errors
+// are the same errors).
+TEST_P(AccuracyBars, DefaultSolverMeetsTheBars) {
+  const Family& f = families()[GetParam()];
+  SCOPED_TRACE(f.name);
+  const ReferenceSet ref = compute_references(f);
+  const Metrics single = measure(f, ref, TorusSolver::Default);
+  expect_bars(f, single);
+  for (const BatchPath path : {BatchPath::Scalar, BatchPath::Avx2, BatchPath::Avx512}) {
+    if (!batch_path_available(path)) continue;
+    SCOPED_TRACE(std::string("batch path ") + batch_path_name(path));
+    const Metrics batch = measure(f, ref, path);
+    expect_bars(f, batch);
+    EXPECT_EQ(batch.errors, single.errors);
   }
 }
 

@@ -191,6 +191,31 @@ Metrics measure(const Family& f, const ReferenceSet& ref, TorusSolver solver) {
   });
 }
 
+Metrics measure(const Family& f, const ReferenceSet& ref, BatchPath path) {
+  const std::size_t n = f.rays.size();
+  std::vector<double> origins(3 * n), directions(3 * n), rows(4 * n);
+  std::vector<int> counts(n);
+  for (std::size_t k = 0; k < n; ++k)
+    for (int i = 0; i < 3; ++i) {
+      origins[3 * k + i] = f.rays[k].origin[i];
+      directions[3 * k + i] = f.rays[k].direction[i];
+    }
+  for (std::size_t begin = 0, end = 0; begin < n; begin = end) {
+    const double major = f.rays[begin].major, minor = f.rays[begin].minor;
+    while (end < n && f.rays[end].major == major && f.rays[end].minor == minor) ++end;
+    intersect_torus_batch_on(path, major, minor, end - begin, &origins[3 * begin], &directions[3 * begin],
+                             &counts[begin], &rows[4 * begin]);
+  }
+  // measure() hands the finder the family's own RayCase: its index is its
+  // place in f.rays.
+  return measure(f, ref, [&](const RayCase& c, double t[4]) {
+    const std::size_t k = static_cast<std::size_t>(&c - f.rays.data());
+    const int count = std::max(counts[k], 0);  // -1 (bad input) would be a bug: measured as no roots
+    for (int i = 0; i < count; ++i) t[i] = rows[4 * k + i];
+    return count;
+  });
+}
+
 Metrics measure(const Family& f, const ReferenceSet& ref, const RootFinder& solve) {
   Metrics m;
   for (size_t k = 0; k < f.rays.size(); ++k) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "accuracy/reference.h"
+#include "toroid/torus/batch.h"
 #include "toroid/torus/solver.h"
 
 namespace toroid::accuracy {
@@ -58,6 +59,10 @@ using RootFinder = std::function<int(const RayCase& c, double t[4])>;
 ReferenceSet compute_references(const Family& f);
 Metrics measure(const Family& f, const ReferenceSet& ref, TorusSolver solver);
 Metrics measure(const Family& f, const ReferenceSet& ref, const RootFinder& solve);
+// The default solver through the batch call on `path` (torus/batch.h), which
+// must be available: the family's rays go in one call per run of rays on the
+// same torus, and the rows it writes are measured.
+Metrics measure(const Family& f, const ReferenceSet& ref, BatchPath path);
 
 // The bars of docs/torus.md, for the default solver on family f: no missed
 // root (those in grazing pairs included: every grazing pair is found, both
