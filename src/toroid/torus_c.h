@@ -71,7 +71,7 @@ void toroid_torus_normal(double major, double minor, const double point[3], doub
  * counts n ints, roots n*4 doubles. Invalid radii: every count -1. With n > 0
  * and a NULL array, nothing is read; every count is -1 and every root NaN in
  * the arrays that are not NULL. Where the CPU has AVX-512 or AVX2 (x86-64,
- * chosen at run time) it solves 8 or 4 rays at a time, with the same answers.
+ * chosen at run time) it solves 16 or 8 rays at a time, with the same answers.
  */
 void toroid_torus_intersect_batch(double major, double minor, size_t n, const double* origins, const double* directions,
                                   int* counts, double* roots) TOROID_C_NOEXCEPT;

@@ -2,7 +2,7 @@
 // The batch call's code paths: intersect_torus_batch (checked.h) runs the
 // widest one this CPU has; tests and benchmarks pick one by name. Every path
 // gives every row the single-ray call's answer, bit for bit: the SIMD paths
-// run the default solver's common case on 4 or 8 rays at a time with the
+// run the default solver's common case on 8 or 16 rays at a time with the
 // same operations in the same order (no fused multiply-add where the scalar
 // code has none), and hand every ray that leaves that case (a near-tangent
 // pair, a ray through the axis, a spindle, an invalid ray, a torus or ray far
@@ -15,8 +15,8 @@ namespace toroid {
 
 enum class BatchPath {
   Scalar,  // one ray at a time, on any CPU
-  Avx2,    // 4 rays at a time, x86-64 with AVX2 and FMA
-  Avx512,  // 8 rays at a time, x86-64 with AVX-512F
+  Avx2,    // 8 rays at a time (two vectors of four), x86-64 with AVX2 and FMA
+  Avx512,  // 16 rays at a time (two vectors of eight), x86-64 with AVX-512F
 };
 
 // The path's name as the benchmarks print it: "scalar", "avx2", "avx512".

@@ -614,9 +614,11 @@ class BatchSolver {
 
   // Stage 4: the root searches left, kGroups vectors of them at a time (the
   // groups' chains of square roots and divisions overlap), each lane taking
-  // the next search as soon as its own ends.
+  // the next search as soon as its own ends. (One group where a vector is
+  // already two of the instruction set's.)
   void root_searches() {
-    constexpr int kGroups = 2, kLanes = kGroups * kWidth;
+    constexpr int kGroups = kWidth > 8 ? 1 : 2, kLanes = kGroups * kWidth;
+    static_assert(kLanes < 32, "the lanes' mask is an unsigned int");
     constexpr unsigned kAll = (1u << kLanes) - 1;
     const RootJobs& q = ws_.roots;
     const Candidates& c = ws_.cand;

@@ -52,7 +52,7 @@ TOROID_HD int intersect_torus_row(double major, double minor, const double origi
 // directions[3i..3i+2]; its count goes to counts[i] and its roots to
 // roots[4i..4i+3], the slots beyond its count set to NaN (so are all four of a
 // ray with count -1 or 0). Every row is the single-ray call's answer, bit for
-// bit. It runs 4 or 8 rays at a time where the CPU allows (batch.h), one
+// bit. It runs 8 or 16 rays at a time where the CPU allows (batch.h), one
 // at a time elsewhere, with the same answers. Returns -1 for invalid radii, else the number of roots of
 // all the rays together (a long long: 4 n overflows an int for n > 2^29). n == 0 touches no array.
 long long intersect_torus_batch(double major, double minor, std::size_t n, const double* origins,
