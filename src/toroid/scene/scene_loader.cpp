@@ -160,10 +160,44 @@ void report_warnings(LoadState& state) {
       std::cerr << w.text << '\n';
 }
 
+// A carriage return that does not end a line (old Mac line endings):
+// yaml-cpp neither breaks the line there nor reads it as a blank, and may
+// drop the rest of the file, so the scene is refused with its position.
+void refuse_lone_carriage_returns(const std::string& text, const std::string& source) {
+  std::size_t line_start = 0;
+  int line = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    } else if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) {
+      throw SceneError(
+          source + ':' + std::to_string(line) + ':' + std::to_string(i - line_start + 1) +
+          ": a carriage return that does not end a line (save the file with Unix or Windows line endings)");
+    }
+  }
+}
+
+// The document's node tree; text after its list is refused with its
+// position (YAML::Load would drop it).
+YAML::Node load_document(const std::string& text, const std::string& source) {
+  try {
+    YAML::Node root = YAML::Load(text);
+    if (const std::optional<YAML::Mark> m = second_document(text))
+      throw SceneError(source + ':' + std::to_string(m->line + 1) + ':' + std::to_string(m->column + 1) +
+                       ": the scene's list ends before this (a scene is one YAML document: a list of items, each "
+                       "'- ' at the list's column)");
+    return root;
+  } catch (const YAML::Exception& e) {
+    throw SceneError(format_yaml_error(source, e));
+  }
+}
+
 }  // namespace
 
 Scene load_scene_from_string(const std::string& text, const std::string& source, const std::filesystem::path& base_dir,
                              const SceneLoadOptions& options) {
+  refuse_lone_carriage_returns(text, source);
   if (!options.whole_document) {
     if (const std::optional<YamlItems> items = split_items(text)) {
       // When the items do not load alone, or an item is wrong, the whole
@@ -183,12 +217,7 @@ Scene load_scene_from_string(const std::string& text, const std::string& source,
       }
     }
   }
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw SceneError(format_yaml_error(source, e));
-  }
+  const YAML::Node root = load_document(text, source);
   LoadState state(source, base_dir, options);
   try {
     Scene scene = load_whole(state, root);

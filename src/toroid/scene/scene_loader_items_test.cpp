@@ -141,5 +141,38 @@ TEST(SceneLoaderItems, ASyntaxErrorAfterABadItemIsReportedFirstAsBefore) {
                          "s.yml:15:1: YAML syntax error: end of sequence flow not found");
 }
 
+// yaml-cpp's YAML::Load stops at the end of the first document's list and
+// drops what follows; the scene is refused there instead, both ways.
+TEST(SceneLoaderItems, TextAfterTheListIsAnError) {
+  const std::string after =
+      "s.yml:12:1: the scene's list ends before this (a scene is one YAML document: a list of "
+      "items, each '- ' at the list's column)";
+  expect_error_both_ways(kCamera + "add: sphere\n", after);         // 12: a map key at the list's column
+  expect_error_both_ways(kCamera + "\f- add: sphere\n", after);     // 12: a form feed before the '-'
+  expect_error_both_ways(kCamera + "---\n- add: sphere\n", after);  // 12: a second document
+  expect_error_both_ways(kCamera + ", 1]\n", after);  // 12: stray tokens, which yaml-cpp reads as an empty document
+  expect_error_both_ways(kCamera + "---\n", after);   // 12: even an empty second document
+  EXPECT_EQ(error_of(kCamera + "...\n# the end\n", false), "");  // the document's end marker, then a comment
+}
+
+// A carriage return alone (old Mac line endings) is no line break to
+// yaml-cpp: it may drop the rest of the file or read an item otherwise than
+// the whole document does. It is refused, both ways; Windows line endings
+// load.
+TEST(SceneLoaderItems, ACarriageReturnThatEndsNoLineIsAnError) {
+  const std::string message =
+      ": a carriage return that does not end a line (save the file with Unix or Windows line endings)";
+  expect_error_both_ways(kCamera + "- add: sphere\n  \r material: {}\n" + testing::kSceneLight, "s.yml:13:3" + message);
+  expect_error_both_ways(kCamera + "\r- add: sphere\n", "s.yml:12:1" + message);
+  expect_error_both_ways(kCamera + "- add: sphere\r", "s.yml:12:14" + message);
+  std::string windows;
+  for (char c : kCamera + "- add: sphere\n  material: {}\n" + testing::kSceneLight) {
+    if (c == '\n') windows += '\r';
+    windows += c;
+  }
+  EXPECT_EQ(error_of(windows, false), "");
+  EXPECT_EQ(error_of(windows, true), "");
+}
+
 }  // namespace
 }  // namespace toroid

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "toroid/scene/yaml_items.h"
 
+#include <yaml-cpp/eventhandler.h>
+
 #include <istream>
 #include <streambuf>
 
@@ -70,7 +72,41 @@ bool scalars_end_inside(const YAML::Node& node, std::string_view text) {
   }
 }
 
+// Takes a document's events and keeps none of them.
+class IgnoreEvents : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+// Keeps the mark where its document starts.
+class DocumentStart : public IgnoreEvents {
+ public:
+  void OnDocumentStart(const YAML::Mark& mark) override { start = mark; }
+  YAML::Mark start;
+};
+
 }  // namespace
+
+std::optional<YAML::Mark> second_document(std::string_view text) {
+  TextBuffer buffer(text);
+  std::istream in(&buffer);
+  YAML::Parser parser(in);
+  IgnoreEvents first;
+  if (!parser.HandleNextDocument(first)) return std::nullopt;
+  // One call only: on some stray tokens (a ',' or ']' after the list)
+  // yaml-cpp gives an empty document each call without reading on.
+  DocumentStart second;
+  if (!parser.HandleNextDocument(second)) return std::nullopt;
+  return second.start;
+}
 
 std::optional<YamlItems> split_items(std::string_view text) {
   // The first line with content must be an item: '-' and a space, after

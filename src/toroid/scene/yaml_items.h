@@ -42,4 +42,11 @@ std::optional<YamlItems> split_items(std::string_view text);
 // document that it needs): load the whole document instead.
 std::optional<YAML::Node> load_item(const YamlItemText& item);
 
+// Where a second YAML document starts in `text` (yaml-cpp's YAML::Load reads
+// the first and drops the rest, which may be anything from '---' to a line at
+// the list's column that is no item); nullopt when there is none. Throws
+// YAML::Exception on a syntax error. It parses the first document again,
+// without building its nodes.
+std::optional<YAML::Mark> second_document(std::string_view text);
+
 }  // namespace toroid
