@@ -4,10 +4,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -149,13 +151,12 @@ PreparedRender prepare_render(const RenderCommandOptions& opt, bool check_output
   return out;
 }
 
-int write_output(const Canvas& canvas, const RenderCommandOptions& opt) {
+namespace {
+
+// Runs `write` (write_image), reporting an ImageWriteError; the exit status.
+int write_reporting(const std::function<bool()>& write) {
   try {
-    ImageWriteOptions wo;
-    wo.scale = std::exp2(opt.exposure);
-    wo.linear_png = opt.linear;
-    wo.cancel = &g_interrupted;
-    if (!write_image(canvas, opt.output, wo)) return interrupted_exit();
+    if (!write()) return interrupted_exit();
   } catch (const std::exception& e) {
     std::cerr << "toroid render: " << e.what() << "\n";
     return 1;
@@ -163,10 +164,24 @@ int write_output(const Canvas& canvas, const RenderCommandOptions& opt) {
   return 0;
 }
 
-void print_summary(const Canvas& canvas, int samples, Integrator integrator, const std::string& workers, double seconds,
-                   std::uint64_t rays) {
-  std::fprintf(stderr, "%dx%d, %d samples, %s%s, %.2f s, %llu rays, %.2f Mrays/s\n", canvas.width(), canvas.height(),
-               samples, integrator == Integrator::path ? "path integrator, " : "", workers.c_str(), seconds,
+}  // namespace
+
+int write_output(const Canvas& canvas, const RenderCommandOptions& opt) {
+  ImageWriteOptions wo;
+  wo.scale = std::exp2(opt.exposure);
+  wo.linear_png = opt.linear;
+  wo.cancel = &g_interrupted;
+  return write_reporting([&] { return write_image(canvas, opt.output, wo); });
+}
+
+int write_output(const Image8& image, const RenderCommandOptions& opt) {
+  return write_reporting([&] { return write_image(image, opt.output, &g_interrupted); });
+}
+
+void print_summary(int width, int height, int samples, Integrator integrator, const std::string& workers,
+                   double seconds, std::uint64_t rays) {
+  std::fprintf(stderr, "%dx%d, %d samples, %s%s, %.2f s, %llu rays, %.2f Mrays/s\n", width, height, samples,
+               integrator == Integrator::path ? "path integrator, " : "", workers.c_str(), seconds,
                static_cast<unsigned long long>(rays), seconds > 0 ? static_cast<double>(rays) / seconds / 1e6 : 0.0);
 }
 
@@ -196,14 +211,36 @@ int run_render(const RenderCommandOptions& opt) {
 
   const bool show_bar = shows_bar(opt);
   if (show_bar) job.options.progress = draw_bar;
+  const int width = job.camera.hsize(), height = job.camera.vsize();
   RenderStats stats;
-  const Canvas canvas = render_image(job.camera, job.scene.world, job.options, &stats);
-  if (show_bar) clear_bar();
-  if (stats.cancelled || g_interrupted) return interrupted_exit();
-  if (const int code = write_output(canvas, opt); code != 0) return code;
+  int code = 0;
+  if (const ImageFormat format = *image_format_of(opt.output); format == ImageFormat::exr) {
+    const Canvas canvas = render_image(job.camera, job.scene.world, job.options, &stats);
+    if (show_bar) clear_bar();
+    if (stats.cancelled || g_interrupted) return interrupted_exit();
+    code = write_output(canvas, opt);
+  } else {
+    // A PNG or PPM holds 8-bit codes: each tile is encoded as it arrives,
+    // so the render never holds the image's linear colours (24 bytes a
+    // pixel, where the codes take 3).
+    ImageWriteOptions wo;
+    wo.linear_png = opt.linear;
+    Image8 image(width, height, srgb_codes(format, wo));
+    const double scale = std::exp2(opt.exposure);
+    const TileGrid grid{width, height, std::max(1, job.options.tile_size)};
+    stats = render_tiles(job.camera, job.scene.world, job.options, 0, grid.count(),
+                         [&](int, const PixelRect& r, const Color* pixels) {
+                           for (int y = r.y0; y < r.y1; ++y, pixels += r.width())
+                             encode_codes(pixels, r.width(), scale, image.srgb(), image.row(y) + 3 * r.x0);
+                         });
+    if (show_bar) clear_bar();
+    if (stats.cancelled || g_interrupted) return interrupted_exit();
+    code = write_output(image, opt);
+  }
+  if (code != 0) return code;
   if (!opt.quiet)
-    print_summary(canvas, job.options.samples, job.options.integrator, std::to_string(stats.threads) + " threads",
-                  stats.seconds, stats.rays);
+    print_summary(width, height, job.options.samples, job.options.integrator,
+                  std::to_string(stats.threads) + " threads", stats.seconds, stats.rays);
   return 0;
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "toroid/core/canvas.h"
+#include "toroid/io/image_writer.h"
 #include "toroid/render/camera.h"
 #include "toroid/render/renderer.h"
 #include "toroid/scene/scene_loader.h"
@@ -65,11 +66,14 @@ PreparedRender prepare_render(const RenderCommandOptions& opt, bool check_output
 // status (0; 1 when it cannot be written, with a message; 128 + signal when
 // interrupted).
 int write_output(const Canvas& canvas, const RenderCommandOptions& opt);
+// The same for the 8-bit codes of a PNG or PPM (encoded with --exposure and
+// --linear already).
+int write_output(const Image8& image, const RenderCommandOptions& opt);
 
 // The final line: "WxH, N samples, WORKERS, S s, R rays, M Mrays/s", with
 // "path integrator, " before WORKERS for the path tracer.
-void print_summary(const Canvas& canvas, int samples, Integrator integrator, const std::string& workers, double seconds,
-                   std::uint64_t rays);
+void print_summary(int width, int height, int samples, Integrator integrator, const std::string& workers,
+                   double seconds, std::uint64_t rays);
 
 // SIGINT and SIGTERM set interrupted(); interrupted_exit() says so (unless
 // told not to) and gives the exit status, 128 + the signal. interrupt(sig)

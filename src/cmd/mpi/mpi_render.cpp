@@ -305,7 +305,8 @@ int run_render_mpi(const RenderCommandOptions& opt) {
     workers << size << (size == 1 ? " rank, " : " ranks, ") << all_threads << " threads (tiles by rank:";
     for (int t : gathered.tiles) workers << ' ' << t;
     workers << ')';
-    print_summary(canvas, opt.samples, job.options.integrator, workers.str(), gathered.seconds, gathered.rays);
+    print_summary(canvas.width(), canvas.height(), opt.samples, job.options.integrator, workers.str(), gathered.seconds,
+                  gathered.rays);
   }
   return code == 0 ? finish(0) : code;
 }

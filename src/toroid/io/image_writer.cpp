@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,13 +42,13 @@ void png_warning_fn(png_structp, png_const_charp) {}
 bool cancelled(const std::atomic<bool>* cancel) { return cancel && cancel->load(std::memory_order_relaxed); }
 
 // 0..1 to 0..255, rounded, as canvas_to_ppm writes a component.
-int ppm_byte(double component) { return static_cast<int>(std::lround(std::clamp(component, 0.0, 1.0) * 255.0)); }
+unsigned char ppm_byte(double component) {
+  return static_cast<unsigned char>(std::lround(std::clamp(component, 0.0, 1.0) * 255.0));
+}
 
 // Returns an empty string on success or when cancelled (then `stopped` is
 // set), else what went wrong.
-std::string write_png(const Canvas& canvas, FILE* f, const ImageWriteOptions& options, bool& stopped) {
-  const std::atomic<bool>* cancel = options.cancel;
-  const double scale = options.scale;
+std::string write_png(const Image8& image, FILE* f, const std::atomic<bool>* cancel, bool& stopped) {
   std::string error;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, png_error_fn, png_warning_fn);
   if (!png) return "out of memory";
@@ -56,70 +57,60 @@ std::string write_png(const Canvas& canvas, FILE* f, const ImageWriteOptions& op
     png_destroy_write_struct(&png, nullptr);
     return "out of memory";
   }
-  const int w = canvas.width(), h = canvas.height();
-  std::vector<unsigned char> row(static_cast<std::size_t>(w) * 3);
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
     return error.empty() ? "libpng error" : error;
   }
   png_init_io(png, f);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), 8, PNG_COLOR_TYPE_RGB,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width()), static_cast<png_uint_32>(image.height()), 8,
+               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   // A linear PNG carries no colour chunk, as the PPM carries none, so that
   // every viewer shows the two files alike. (A gAMA 1.0 chunk would be
   // honoured by some viewers and ignored by others.)
-  if (!options.linear_png) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  if (image.srgb()) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   // zlib's fastest level, rows unfiltered: at that level a row filter
   // changes a render's file by a few percent either way, and costs the
   // writer time (docs/performance.md, "PNG output").
   png_set_compression_level(png, 1);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
   png_write_info(png, info);
-  for (int y = 0; y < h; ++y) {
+  for (int y = 0; y < image.height(); ++y) {
     if (cancelled(cancel)) {
       stopped = true;
       png_destroy_write_struct(&png, &info);
       return {};
     }
-    for (int x = 0; x < w; ++x) {
-      const Color c = canvas.pixel_at(x, y);
-      const double rgb[3] = {c.r * scale, c.g * scale, c.b * scale};
-      for (int i = 0; i < 3; ++i)
-        row[3 * x + i] = options.linear_png ? static_cast<unsigned char>(ppm_byte(rgb[i])) : linear_to_srgb8(rgb[i]);
-    }
-    png_write_row(png, row.data());
+    png_write_row(png, image.row(y));
   }
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   return {};
 }
 
-// The book's plain PPM (canvas_to_ppm's text, byte for byte), of the
-// canvas times `scale`, written a row at a time.
-std::string write_ppm(const Canvas& canvas, FILE* f, double scale, const std::atomic<bool>* cancel, bool& stopped) {
+// The book's plain PPM (canvas_to_ppm's text, byte for byte) of linear
+// codes, written a row at a time.
+std::string write_ppm(const Image8& image, FILE* f, const std::atomic<bool>* cancel, bool& stopped) {
   constexpr std::size_t kMaxLine = 70;  // the book's limit on a PPM line
-  std::string text = "P3\n" + std::to_string(canvas.width()) + " " + std::to_string(canvas.height()) + "\n255\n";
-  for (int y = 0; y < canvas.height(); ++y) {
+  std::string text = "P3\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n255\n";
+  for (int y = 0; y < image.height(); ++y) {
     if (cancelled(cancel)) {
       stopped = true;
       return {};
     }
     std::size_t line_length = 0;
-    for (int x = 0; x < canvas.width(); ++x) {
-      const Color c = canvas.pixel_at(x, y);
-      for (const double component : {c.r * scale, c.g * scale, c.b * scale}) {
-        const std::string token = std::to_string(ppm_byte(component));
-        if (line_length == 0) {
-          line_length = token.size();
-        } else if (line_length + 1 + token.size() > kMaxLine) {
-          text += '\n';
-          line_length = token.size();
-        } else {
-          text += ' ';
-          line_length += 1 + token.size();
-        }
-        text += token;
+    const unsigned char* codes = image.row(y);
+    for (int i = 0; i < 3 * image.width(); ++i) {
+      const std::string token = std::to_string(codes[i]);
+      if (line_length == 0) {
+        line_length = token.size();
+      } else if (line_length + 1 + token.size() > kMaxLine) {
+        text += '\n';
+        line_length = token.size();
+      } else {
+        text += ' ';
+        line_length += 1 + token.size();
       }
+      text += token;
     }
     text += '\n';
     if (std::fwrite(text.data(), 1, text.size(), f) != text.size()) return std::strerror(errno);
@@ -178,18 +169,30 @@ void check_image_path(const std::string& path) {
   std::remove(tmp.c_str());
 }
 
-bool write_image(const Canvas& canvas, const std::string& path, const std::atomic<bool>* cancel) {
-  ImageWriteOptions options;
-  options.cancel = cancel;
-  return write_image(canvas, path, options);
+Image8::Image8(int width, int height, bool srgb)
+    : width_(width),
+      height_(height),
+      srgb_(srgb),
+      codes_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3) {}
+
+bool srgb_codes(ImageFormat format, const ImageWriteOptions& options) {
+  return format == ImageFormat::png && !options.linear_png;
 }
 
-bool write_image(const Canvas& canvas, const std::string& path, const ImageWriteOptions& options) {
-  const ImageFormat format = check_extension(path);
-  if (canvas.width() <= 0 || canvas.height() <= 0) fail(path, "the image is empty");
-  if (!std::isfinite(options.scale) || options.scale <= 0)
-    fail(path, "the scale " + std::to_string(options.scale) + " is not a positive finite number");
-  const std::atomic<bool>* cancel = options.cancel;
+void encode_codes(const Color* pixels, int count, double scale, bool srgb, unsigned char* codes) {
+  for (int i = 0; i < count; ++i) {
+    const Color& c = pixels[i];
+    for (const double v : {c.r * scale, c.g * scale, c.b * scale}) *codes++ = srgb ? linear_to_srgb8(v) : ppm_byte(v);
+  }
+}
+
+namespace {
+
+// Writes the file through `write` (which returns what went wrong, or "" and
+// sets `stopped` when cancelled) to a temporary name beside `path`, then
+// renames it; see write_image.
+bool write_file(const std::string& path, const std::atomic<bool>* cancel,
+                const std::function<std::string(FILE*, bool&)>& write) {
   int fd = -1;
   const std::string tmp = create_temporary_beside(path, fd);
   FILE* f = fdopen(fd, "wb");
@@ -199,13 +202,8 @@ bool write_image(const Canvas& canvas, const std::string& path, const ImageWrite
     std::remove(tmp.c_str());
     fail(path, std::strerror(e));
   }
-  std::string error;
   bool stopped = false;
-  switch (format) {
-    case ImageFormat::png: error = write_png(canvas, f, options, stopped); break;
-    case ImageFormat::ppm: error = write_ppm(canvas, f, options.scale, cancel, stopped); break;
-    case ImageFormat::exr: error = detail::write_exr(canvas, options.scale, f, cancel, stopped); break;
-  }
+  std::string error = write(f, stopped);
   if (std::fflush(f) != 0 && error.empty()) error = std::strerror(errno);
   if (std::ferror(f) && error.empty()) error = "write error";
   if (std::fclose(f) != 0 && error.empty()) error = std::strerror(errno);
@@ -225,6 +223,40 @@ bool write_image(const Canvas& canvas, const std::string& path, const ImageWrite
     fail(path, error);
   }
   return true;
+}
+
+}  // namespace
+
+bool write_image(const Canvas& canvas, const std::string& path, const std::atomic<bool>* cancel) {
+  ImageWriteOptions options;
+  options.cancel = cancel;
+  return write_image(canvas, path, options);
+}
+
+bool write_image(const Canvas& canvas, const std::string& path, const ImageWriteOptions& options) {
+  const ImageFormat format = check_extension(path);
+  if (canvas.width() <= 0 || canvas.height() <= 0) fail(path, "the image is empty");
+  if (!std::isfinite(options.scale) || options.scale <= 0)
+    fail(path, "the scale " + std::to_string(options.scale) + " is not a positive finite number");
+  if (format == ImageFormat::exr)
+    return write_file(path, options.cancel, [&](FILE* f, bool& stopped) {
+      return detail::write_exr(canvas, options.scale, f, options.cancel, stopped);
+    });
+  Image8 image(canvas.width(), canvas.height(), srgb_codes(format, options));
+  for (int y = 0; y < canvas.height(); ++y)
+    encode_codes(canvas.pixels().data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(canvas.width()),
+                 canvas.width(), options.scale, image.srgb(), image.row(y));
+  return write_image(image, path, options.cancel);
+}
+
+bool write_image(const Image8& image, const std::string& path, const std::atomic<bool>* cancel) {
+  const ImageFormat format = check_extension(path);
+  if (format == ImageFormat::exr) fail(path, "an 8-bit image is written as .png or .ppm, not OpenEXR");
+  if (format == ImageFormat::ppm && image.srgb()) fail(path, "a PPM holds linear codes, not sRGB ones");
+  if (image.width() <= 0 || image.height() <= 0) fail(path, "the image is empty");
+  return write_file(path, cancel, [&](FILE* f, bool& stopped) {
+    return format == ImageFormat::png ? write_png(image, f, cancel, stopped) : write_ppm(image, f, cancel, stopped);
+  });
 }
 
 }  // namespace toroid

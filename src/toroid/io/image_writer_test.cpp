@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -197,6 +198,69 @@ TEST(ImageWriter, Errors) {
               "cannot write '" + missing + "': folder '" + (d / "nodir").string() + "' does not exist");
   }
   EXPECT_FALSE(fs::exists(missing));
+  EXPECT_TRUE(fs::is_empty(d));
+  fs::remove_all(d);
+}
+
+TEST(ImageWriter, EncodesCodesTheWayEachFormatHoldsThem) {
+  const Color pixels[] = {{0.5, 0.25, 2}, {-1, std::nan(""), 0.001}};
+  unsigned char srgb[6], linear[6];
+  encode_codes(pixels, 2, 1.0, true, srgb);
+  encode_codes(pixels, 2, 1.0, false, linear);
+  EXPECT_EQ(std::vector<int>(srgb, srgb + 6), (std::vector<int>{188, 137, 255, 0, 0, 3}));
+  EXPECT_EQ(std::vector<int>(linear, linear + 6), (std::vector<int>{128, 64, 255, 0, 0, 0}));
+  encode_codes(pixels, 1, 2.0, false, linear);  // the scale comes first
+  EXPECT_EQ(std::vector<int>(linear, linear + 3), (std::vector<int>{255, 128, 255}));
+  ImageWriteOptions options;
+  EXPECT_TRUE(srgb_codes(ImageFormat::png, options));
+  EXPECT_FALSE(srgb_codes(ImageFormat::ppm, options));
+  options.linear_png = true;
+  EXPECT_FALSE(srgb_codes(ImageFormat::png, options));
+}
+
+// A render writes its PNG or PPM from codes it encoded a tile at a time:
+// the file is the one write_image makes of the canvas.
+TEST(ImageWriter, AnImageOfCodesWritesTheCanvassFile) {
+  const fs::path d = temp_dir("codes");
+  Canvas c(3, 2);
+  c.write_pixel(0, 0, Color{1, 0.2, 0});
+  c.write_pixel(2, 1, Color{0.5, 0.5, 3});
+  for (const char* name : {"x.png", "x.ppm"}) {
+    SCOPED_TRACE(name);
+    ImageWriteOptions options;
+    options.scale = 0.5;
+    const ImageFormat format = *image_format_of(name);
+    Image8 image(3, 2, srgb_codes(format, options));
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < 3; ++x) {
+        const Color pixel = c.pixel_at(x, y);
+        encode_codes(&pixel, 1, options.scale, image.srgb(), image.row(y) + 3 * x);
+      }
+    const std::string from_canvas = (d / ("canvas-" + std::string(name))).string();
+    const std::string from_codes = (d / ("codes-" + std::string(name))).string();
+    ASSERT_TRUE(write_image(c, from_canvas, options));
+    ASSERT_TRUE(write_image(image, from_codes));
+    EXPECT_EQ(file_text(from_canvas), file_text(from_codes));
+  }
+  fs::remove_all(d);
+}
+
+TEST(ImageWriter, AnImageOfCodesIsAPngOrALinearPpm) {
+  const fs::path d = temp_dir("codes-err");
+  const std::string exr = (d / "x.exr").string(), ppm = (d / "x.ppm").string();
+  try {
+    write_image(Image8(2, 2, false), exr);
+    ADD_FAILURE();
+  } catch (const ImageWriteError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "cannot write '" + exr + "': an 8-bit image is written as .png or .ppm, not OpenEXR");
+  }
+  try {
+    write_image(Image8(2, 2, true), ppm);
+    ADD_FAILURE();
+  } catch (const ImageWriteError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot write '" + ppm + "': a PPM holds linear codes, not sRGB ones");
+  }
   EXPECT_TRUE(fs::is_empty(d));
   fs::remove_all(d);
 }
