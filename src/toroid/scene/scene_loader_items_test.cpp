@@ -143,6 +143,19 @@ TEST(SceneLoaderItems, ASyntaxErrorAfterABadItemIsReportedFirstAsBefore) {
 
 // yaml-cpp's YAML::Load stops at the end of the first document's list and
 // drops what follows; the scene is refused there instead, both ways.
+// Found by CI's scene_fuzz: the item alone loaded (an unused define with a
+// stray line), the whole document did not.
+TEST(SceneLoaderItems, AStrayLineThatBreaksTheNextItemIsTheDocumentsSyntaxError) {
+  expect_error_both_ways(kCamera +
+                             "- define: shell\n"   // 12
+                             "  value:\n"          // 13
+                             "    ambient: 0.1\n"  // 14
+                             "    specu, 1, 0]\n"  // 15
+                             "\n"                  // 16
+                             "- add: sphere\n",    // 17
+                         "s.yml:17:6: YAML syntax error: illegal map value");
+}
+
 TEST(SceneLoaderItems, TextAfterTheListIsAnError) {
   const std::string after =
       "s.yml:12:1: the scene's list ends before this (a scene is one YAML document: a list of "

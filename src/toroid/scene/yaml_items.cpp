@@ -5,18 +5,30 @@
 
 #include <istream>
 #include <streambuf>
+#include <string>
+#include <utility>
 
 namespace toroid {
 
 namespace {
 
-// Reads text in place (an istringstream would copy it).
+// Reads text in place (an istringstream would copy it), then `then`.
 class TextBuffer : public std::streambuf {
  public:
-  explicit TextBuffer(std::string_view text) {
+  explicit TextBuffer(std::string_view text, std::string_view then = {}) : then_(then) { read(text); }
+
+ private:
+  int_type underflow() override {
+    if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+    if (then_.empty()) return traits_type::eof();
+    read(std::exchange(then_, {}));
+    return traits_type::to_int_type(*gptr());
+  }
+  void read(std::string_view text) {
     char* begin = const_cast<char*>(text.data());  // only read: the get area
     setg(begin, begin, begin + text.size());
   }
+  std::string_view then_;
 };
 
 bool starts_document_marker(std::string_view line) {
@@ -157,12 +169,23 @@ std::optional<YamlItems> split_items(std::string_view text) {
   for (std::size_t i = 0; i < begins.size(); ++i) {
     const std::size_t end = i + 1 < begins.size() ? begins[i + 1] : text.size();
     out.items[i].text = text.substr(begins[i], end - begins[i]);
+    out.items[i].followed = i + 1 < begins.size();
   }
   return out;
 }
 
 std::optional<YAML::Node> load_item(const YamlItemText& item) {
-  TextBuffer buffer(item.text);
+  // An item that another follows is read with a stand-in for that one after
+  // it: what an item leaves behind can break the next one's first key in
+  // yaml-cpp (a plain scalar where a key belongs, with no ':' after it, makes
+  // the next "key:" an "illegal map value"), which its text alone would hide.
+  std::string next_item;
+  if (item.followed) {
+    const std::size_t dash = item.text.find_first_not_of(' ');
+    next_item.assign(dash == std::string_view::npos ? 0 : dash, ' ');
+    next_item += "- a:\n";
+  }
+  TextBuffer buffer(item.text, next_item);
   std::istream in(&buffer);
   YAML::Node list;
   try {
@@ -170,7 +193,7 @@ std::optional<YAML::Node> load_item(const YamlItemText& item) {
   } catch (const YAML::Exception&) {
     return std::nullopt;
   }
-  if (!list.IsSequence() || list.size() != 1) return std::nullopt;
+  if (!list.IsSequence() || list.size() != (item.followed ? 2u : 1u)) return std::nullopt;
   const YAML::Node node = list[0];
   if (node.Mark().line != 0 || node.Mark().column != item.column) return std::nullopt;
   if (item.text.find_first_of("\"'") != std::string_view::npos && !scalars_end_inside(node, item.text))

@@ -18,8 +18,9 @@ namespace toroid {
 // the line before the next item's.
 struct YamlItemText {
   std::string_view text;
-  int first_line = 0;  // 0-based line of the file where `text` starts
-  int column = 0;      // 0-based column of the item's node on that line
+  int first_line = 0;     // 0-based line of the file where `text` starts
+  int column = 0;         // 0-based column of the item's node on that line
+  bool followed = false;  // whether another item comes after it
 };
 
 struct YamlItems {
@@ -39,7 +40,8 @@ std::optional<YamlItems> split_items(std::string_view text);
 // The node of one item, with the marks of its own text: add `first_line` to
 // a mark's line for the file's (columns are the file's). Returns nullopt when
 // the text alone does not read as that one item (say a tag directive of the
-// document that it needs): load the whole document instead.
+// document that it needs), or, when `followed`, as an item that another can
+// follow: load the whole document instead.
 std::optional<YAML::Node> load_item(const YamlItemText& item);
 
 // Where a second YAML document starts in `text` (yaml-cpp's YAML::Load reads

@@ -109,6 +109,29 @@ TEST(LoadItem, GivesTheItemsNodeWithMarksCountedFromItsFirstLine) {
   EXPECT_EQ(color.column, 11);
 }
 
+// In yaml-cpp a plain scalar where a key belongs, with no ':' after it,
+// makes the first key of the next item an "illegal map value"; the item is
+// refused when another follows it, so that the whole document's load
+// reports that error, and loads when it is the last, as the document does.
+TEST(LoadItem, RefusesAnItemThatBreaksTheNextItemsFirstKey) {
+  const char* text = "- a: b\n  c: d\n  stray\n- e: f\n";
+  EXPECT_THROW(YAML::Load(text), YAML::ParserException);
+  const auto items = split_items(text);
+  ASSERT_TRUE(items);
+  ASSERT_EQ(items->items.size(), 2u);
+  EXPECT_TRUE(items->items[0].followed);
+  EXPECT_FALSE(items->items[1].followed);
+  EXPECT_FALSE(load_item(items->items[0]));
+  EXPECT_TRUE(load_item(items->items[1]));
+
+  const auto last = split_items("- e: f\n- a: b\n  c: d\n  stray\n");
+  ASSERT_TRUE(last);
+  ASSERT_EQ(last->items.size(), 2u);
+  EXPECT_NO_THROW(YAML::Load("- e: f\n- a: b\n  c: d\n  stray\n"));
+  EXPECT_TRUE(load_item(last->items[0]));
+  EXPECT_TRUE(load_item(last->items[1]));
+}
+
 TEST(LoadItem, RefusesTextThatIsNotThatOneItem) {
   EXPECT_FALSE(load_item({"- a\n- b\n", 0, 2}));  // two items
   EXPECT_FALSE(load_item({"a: b\n", 0, 0}));      // no list
