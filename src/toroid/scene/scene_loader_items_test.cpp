@@ -141,8 +141,6 @@ TEST(SceneLoaderItems, ASyntaxErrorAfterABadItemIsReportedFirstAsBefore) {
                          "s.yml:15:1: YAML syntax error: end of sequence flow not found");
 }
 
-// yaml-cpp's YAML::Load stops at the end of the first document's list and
-// drops what follows; the scene is refused there instead, both ways.
 // Found by CI's scene_fuzz: the item alone loaded (an unused define with a
 // stray line), the whole document did not.
 TEST(SceneLoaderItems, AStrayLineThatBreaksTheNextItemIsTheDocumentsSyntaxError) {
@@ -156,6 +154,8 @@ TEST(SceneLoaderItems, AStrayLineThatBreaksTheNextItemIsTheDocumentsSyntaxError)
                          "s.yml:17:6: YAML syntax error: illegal map value");
 }
 
+// yaml-cpp's YAML::Load stops at the end of the first document's list and
+// drops what follows; the scene is refused there instead, both ways.
 TEST(SceneLoaderItems, TextAfterTheListIsAnError) {
   const std::string after =
       "s.yml:12:1: the scene's list ends before this (a scene is one YAML document: a list of "
