@@ -6,6 +6,9 @@
 //   nearest: the renderer's query, the nearest root in (0, inf), mixed set;
 //   blocks:  the shadow query, torus_blocks: whether a root lies in (0, inf),
 //            mixed set;
+//   surface: the shadow query on rays that leave the torus, as a renderer's
+//            shadow rays do: from 1e-5 above a random point of the surface
+//            (the renderer's over-point), in a random direction away from it;
 //   batch:   intersect_torus_batch_on each path (scalar, avx2, avx512) over
 //            the 4096 rays of a set: ns per ray, all roots.
 #include <benchmark/benchmark.h>
@@ -56,6 +59,35 @@ std::vector<BenchRay> make_rays(bool hits_only) {
   return rays;
 }
 
+std::vector<BenchRay> make_surface_rays() {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> angle(0, 2 * M_PI), u(-1, 1);
+  std::vector<BenchRay> rays;
+  while (rays.size() < 4096) {
+    const double theta = angle(rng), phi = angle(rng);
+    const double n[3] = {std::cos(phi) * std::cos(theta), std::cos(phi) * std::sin(theta), std::sin(phi)};
+    double dir[3];
+    double len2 = 0;
+    do {
+      for (double& c : dir) c = u(rng);
+      len2 = dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2];
+    } while (len2 > 1 || len2 < 1e-6 || dir[0] * n[0] + dir[1] * n[1] + dir[2] * n[2] <= 0);
+    BenchRay r;
+    const double ring[3] = {kR * std::cos(theta), kR * std::sin(theta), 0};
+    for (int i = 0; i < 3; ++i) {
+      r.o[i] = ring[i] + (kr + 1e-5) * n[i];
+      r.d[i] = dir[i] / std::sqrt(len2);
+    }
+    rays.push_back(r);
+  }
+  return rays;
+}
+
+const std::vector<BenchRay>& surface_rays() {
+  static const std::vector<BenchRay> surface = make_surface_rays();
+  return surface;
+}
+
 const std::vector<BenchRay>& rays(bool hits_only) {
   static const std::vector<BenchRay> mixed = make_rays(false), hits = make_rays(true);
   return hits_only ? hits : mixed;
@@ -86,8 +118,8 @@ void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver) {
   state.SetItemsProcessed(state.iterations());
 }
 
-void BM_Blocks(benchmark::State& state, toroid::TorusSolver solver) {
-  const auto& rs = rays(false);
+void BM_Blocks(benchmark::State& state, toroid::TorusSolver solver, bool from_surface) {
+  const auto& rs = from_surface ? surface_rays() : rays(false);
   size_t i = 0;
   for (auto _ : state) {
     const BenchRay& r = rs[i++ & (rs.size() - 1)];
@@ -134,8 +166,10 @@ TOROID_BENCH(BM_AllRoots, tianheng_hits, TorusSolver::Tianheng, true);
 TOROID_BENCH(BM_Nearest, default_mixed, TorusSolver::Default);
 TOROID_BENCH(BM_Nearest, ferrari_mixed, TorusSolver::Ferrari);
 TOROID_BENCH(BM_Nearest, tianheng_mixed, TorusSolver::Tianheng);
-TOROID_BENCH(BM_Blocks, default_mixed, TorusSolver::Default);
-TOROID_BENCH(BM_Blocks, ferrari_mixed, TorusSolver::Ferrari);
+TOROID_BENCH(BM_Blocks, default_mixed, TorusSolver::Default, false);
+TOROID_BENCH(BM_Blocks, ferrari_mixed, TorusSolver::Ferrari, false);
+TOROID_BENCH(BM_Blocks, default_surface, TorusSolver::Default, true);
+TOROID_BENCH(BM_Blocks, ferrari_surface, TorusSolver::Ferrari, true);
 TOROID_BENCH(BM_Batch, scalar_mixed, BatchPath::Scalar, false);
 TOROID_BENCH(BM_Batch, avx2_mixed, BatchPath::Avx2, false);
 TOROID_BENCH(BM_Batch, avx512_mixed, BatchPath::Avx512, false);

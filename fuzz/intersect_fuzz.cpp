@@ -18,7 +18,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <limits>
 
 #include "toroid/torus/intersect.h"
 #include "torus_root_checks.h"
@@ -26,6 +28,46 @@
 namespace {
 
 bool finite3(const double v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+
+// torus_blocks answers whether the nearest-root query finds a root in the
+// window: checked on windows that start at the origin (a shadow ray leaving
+// a surface), beside each root and between roots, and end there or at
+// infinity. A window's end within the roots' rounding (a few ulps of
+// |o| + |t d| + R + r, in t) of a root is left out: whether that root lies
+// inside is not decided by either query.
+void check_blocks_agrees_with_nearest(double R, double r, const double o[3], const double d[3], const double t[4],
+                                      int count) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double len = std::hypot(d[0], d[1], d[2]);
+  const double o_len = std::hypot(o[0], o[1], o[2]);
+  const auto rounding = [&](double ti) { return 0x1p-40 * (o_len + std::abs(ti) * len + R + r) / len; };
+  double ends[16];
+  int n = 0;
+  ends[n++] = 0;
+  ends[n++] = kInf;
+  for (int i = 0; i < count; ++i) {
+    const double offset = std::max(1e-3 * r / len, 16 * rounding(t[i]));
+    ends[n++] = t[i] - offset;
+    ends[n++] = t[i] + offset;
+    if (i + 1 < count) ends[n++] = 0.5 * (t[i] + t[i + 1]);
+  }
+  const auto undecided = [&](double end) {
+    for (int i = 0; i < count; ++i)
+      if (std::abs(end - t[i]) <= rounding(t[i])) return true;
+    return false;
+  };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if (!(ends[i] < ends[j]) || undecided(ends[i]) || undecided(ends[j])) continue;
+      double nearest;
+      const bool found = toroid::intersect_torus_nearest(R, r, o, d, ends[i], ends[j], &nearest);
+      if (toroid::torus_blocks(R, r, o, d, ends[i], ends[j]) != found) {
+        std::fprintf(stderr, "torus_blocks on the window (%.17g, %.17g): not the nearest-root query's answer (%d)\n",
+                     ends[i], ends[j], found);
+        toroid::fuzz::fail_roots("torus_blocks disagrees with intersect_torus_nearest", R, r, o, d, t, count);
+      }
+    }
+}
 
 }  // namespace
 
@@ -68,6 +110,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool in_domain = R / r < toroid::kTorusAspectLimit;
     if (s == toroid::TorusSolver::Default && in_domain) {
       toroid::fuzz::check_torus_roots(R, r, o, d, t, count);
+      check_blocks_agrees_with_nearest(R, r, o, d, t, count);
     } else {
       // The closed-form solvers make no accuracy promise (docs/torus.md),
       // nor the default one on tubes thinner than its stated domain: only

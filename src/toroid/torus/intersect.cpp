@@ -40,6 +40,7 @@ namespace toroid {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Where the ray passes the axis, rho carries the rounding of p's x and y,
 // about eps |o_xy|, so a sample there resolves h'' only where rho is well
 // above it: h_out's concave stretch beside the axis is cut at its edges
@@ -145,10 +146,15 @@ class RootCollector {
         s_min_(s_min),
         s_max_(s_max) {}
   TOROID_HD int count() const { return n_; }
+  // Whether a piece's answer hung on a near-tangent minimum, whose sign can
+  // depend on the bracket it was searched on.
+  TOROID_HD bool met_near_tangent() const { return met_near_tangent_; }
 
   // Roots on the piece [a.s, b.s). A zero exactly at b.s counts only if `last`.
   // With `locate` false only whether there are roots matters (shadow rays):
-  // a point of the piece stands for each root found, unrefined.
+  // a point of the piece stands for each root found, unrefined (for a single
+  // root, the piece's middle: its start can round onto the window's start
+  // once the shift is added back).
   TOROID_HD void piece(const Sample& a, const Sample& b, double sigma, bool last, bool locate = true) {
     if (a.s == b.s) {  // a single point: the horn torus's centre
       if (a.h == 0) push(a.s);
@@ -163,7 +169,7 @@ class RootCollector {
     if (pos_a != pos_b) {
       // One root. Newton from the end where g > 0 (Fourier's condition: g
       // and g'' agree) converges without overshoot.
-      push(locate ? root(a, b, pos_a ? a : b, pos_a == (sigma < 0), false) : a.s);
+      push(locate ? root(a, b, pos_a ? a : b, pos_a == (sigma < 0), false) : 0.5 * (a.s + b.s));
     } else if (pos_a && sigma * a.dh < 0 && sigma * b.dh > 0) {
       two_or_none(a, b, sigma, locate);
     }
@@ -213,6 +219,7 @@ class RootCollector {
   // The minimum of g is within rounding of zero (a near-tangent ray): find
   // it by Newton on g' and decide its sign in double-double.
   TOROID_HD void near_tangent(const Sample& a, const Sample& b, double sigma, bool locate) {
+    met_near_tangent_ = true;
     double x0 = (b.h - a.h + a.dh * a.s - b.dh * b.s) / (a.dh - b.dh);
     if (!(x0 > a.s && x0 < b.s)) x0 = 0.5 * (a.s + b.s);
     const double m = solve_monotone(
@@ -335,12 +342,51 @@ class RootCollector {
   bool first_only_;
   double s_min_, s_max_;
   int n_ = 0;
+  bool met_near_tangent_ = false;
 };
 
 // What a search wants: every root, the first one in the window, or only
 // whether the window holds one (then a piece inside the window stops the
 // search as soon as it holds a root, with a point of it for the root).
 enum class Search { All, First, Any };
+
+// Whether the part of the piece [a.s, b.s] inside the window (s_min, s_max)
+// certainly holds no root: the piece cut at the window's ends, with a sample
+// there whose sign is beyond rounding (the bound two_or_none trusts), and
+// the same sign and tangent tests on what is left. A shadow or reflected ray
+// starts beside the surface it left, so a piece that straddles the window's
+// start holds that surface's root just before it: this spares locating it.
+// A piece that holds a root in the window, or whose answer on the cut piece
+// hangs on a near-tangent minimum, is searched as a whole, so the roots
+// found are those of the search without a window, to the bit. An end
+// at an axis cut is not moved: the window's end may lie within rho's
+// rounding of the kink, where a sample's one-sided derivatives are unsure;
+// nor is a convex piece cut where the part left holds the axis passage.
+[[gnu::noinline]] TOROID_HD bool window_misses_piece(const TorusFactor& f, const Sample& a, const Sample& b,
+                                                     double sigma, bool kink_at_a, bool kink_at_b, double s_axis,
+                                                     double s_min, double s_max) {
+  const double uncertain = 1e-6 * f.minor() * f.minor();
+  Sample lo = a, hi = b;
+  if (lo.s < s_min) {
+    if (kink_at_a) return false;
+    lo = f.sample(s_min);
+    if (!(std::abs(lo.h) > uncertain)) return false;
+  }
+  if (hi.s > s_max) {
+    if (kink_at_b) return false;
+    hi = f.sample(s_max);
+    if (!(std::abs(hi.h) > uncertain)) return false;
+  }
+  if (!(lo.s < hi.s)) return false;
+  // A convex piece may hold the ray's passage by the axis only as a spike of
+  // h'' narrower than the samples resolve (see kAxisBlur), where the tests
+  // of the piece whole and of the cut part can disagree.
+  if (sigma > 0 && s_axis >= lo.s && s_axis <= hi.s) return false;
+  double found[4];
+  RootCollector probe(f, found, f.minor() / std::sqrt(f.dd()), false, s_min, s_max);
+  probe.piece(lo, hi, sigma, true, false);
+  return probe.count() == 0 && !probe.met_near_tangent();
+}
 
 // Roots of one factor inside the ball |p| <= radius, in the shifted frame,
 // ascending, restricted to [s_min, s_max]. Pieces wholly outside that window
@@ -394,8 +440,9 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   int ncut = 0;
   cuts[ncut++] = lo;
   double concave_lo = 0, concave_hi = 0;  // empty: convex everywhere
+  // Where the ray passes closest to the axis (NaN for a ray along it).
+  const double s_axis = f.c() > 0 ? -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c() : kNaN;
   if (f.c() > 0) {
-    const double s_axis = -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c();
     // rho's rounding where the ray passes the axis (see kAxisBlur).
     const double blur = kAxisBlur * (std::abs(o[0].hi) + std::abs(o[1].hi));
     if (f.K() == 0) {
@@ -443,7 +490,9 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
       const double sigma = mid > concave_lo && mid < concave_hi ? -1.0 : 1.0;
       const bool inside_window = cuts[i] > s_min && cuts[i + 1] < s_max;
-      collector.piece(start, end, sigma, i + 1 == ncut, !(search == Search::Any && inside_window));
+      if (search != Search::Any || inside_window ||
+          !window_misses_piece(f, start, end, sigma, axis_cut[i], axis_cut[i + 1], s_axis, s_min, s_max))
+        collector.piece(start, end, sigma, i + 1 == ncut, !(search == Search::Any && inside_window));
       if (search != Search::All) {
         for (int k = 0; k < collector.count(); ++k)
           if (out[k] > s_min && out[k] < s_max) return collector.count();
@@ -528,9 +577,13 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
   // the direction holds a NaN or an infinity: no ray, no torus.
   const double R_s = std::scalbn(R, -k), r_s = std::scalbn(r, -k);
   if (!in_solver_range(R_s, r_s, d_s)) return 0;
+  // A root beyond the largest double (a tiny direction) is not representable:
+  // left out, and the window ends there, so that a search for the first
+  // root in it does not stop at one that is left out.
+  const double t_limit = std::scalbn(std::numeric_limits<double>::max(), j - k);
+  const double lo = std::max(std::scalbn(t_min, j - k), -t_limit), hi = std::min(std::scalbn(t_max, j - k), t_limit);
   double found[4];
-  const int m = solve_in_range(R_s, r_s, o_s, d_s, std::scalbn(t_min, j - k), std::scalbn(t_max, j - k), search, found);
-  // A root beyond the largest double (a tiny direction) is not representable: left out.
+  const int m = solve_in_range(R_s, r_s, o_s, d_s, lo, hi, search, found);
   int n = 0;
   for (int i = 0; i < m; ++i)
     if (const double ti = std::scalbn(found[i], k - j); std::isfinite(ti)) t[n++] = ti;
