@@ -33,14 +33,18 @@ bool finite3(const double v[3]) { return std::isfinite(v[0]) && std::isfinite(v[
 // window: checked on windows that start at the origin (a shadow ray leaving
 // a surface), beside each root and between roots, and end there or at
 // infinity. A window's end within the roots' rounding (a few ulps of
-// |o| + |t d| + R + r, in t) of a root is left out: whether that root lies
-// inside is not decided by either query.
+// |o| + |t d| + R + r, in t, and a few subnormal steps) of a root is left
+// out: whether that root lies inside is not decided by either query.
 void check_blocks_agrees_with_nearest(double R, double r, const double o[3], const double d[3], const double t[4],
                                       int count) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const double len = std::hypot(d[0], d[1], d[2]);
   const double o_len = std::hypot(o[0], o[1], o[2]);
-  const auto rounding = [&](double ti) { return 0x1p-40 * (o_len + std::abs(ti) * len + R + r) / len; };
+  // (At least a few subnormal steps: t itself is no finer than those.)
+  const auto rounding = [&](double ti) {
+    return std::max(0x1p-40 * (o_len + std::abs(ti) * len + R + r) / len,
+                    16 * std::numeric_limits<double>::denorm_min());
+  };
   double ends[16];
   int n = 0;
   ends[n++] = 0;
