@@ -364,7 +364,7 @@ enum class Search { All, First, Any };
 // nor is a convex piece cut where the part left holds the axis passage.
 [[gnu::noinline]] TOROID_HD bool window_misses_piece(const TorusFactor& f, const Sample& a, const Sample& b,
                                                      double sigma, bool kink_at_a, bool kink_at_b, double s_axis,
-                                                     double s_min, double s_max) {
+                                                     double axis_blur, double s_min, double s_max) {
   const double uncertain = 1e-6 * f.minor() * f.minor();
   Sample lo = a, hi = b;
   if (lo.s < s_min) {
@@ -378,10 +378,13 @@ enum class Search { All, First, Any };
     if (!(std::abs(hi.h) > uncertain)) return false;
   }
   if (!(lo.s < hi.s)) return false;
-  // A convex piece may hold the ray's passage by the axis only as a spike of
-  // h'' narrower than the samples resolve (see kAxisBlur), where the tests
-  // of the piece whole and of the cut part can disagree.
-  if (sigma > 0 && s_axis >= lo.s && s_axis <= hi.s) return false;
+  // A convex piece may hold the ray's passage by the axis as a spike of h''
+  // narrower than the samples resolve (see kAxisBlur), where the tests of
+  // the piece whole and of the cut part can disagree: not cut where the
+  // passage lies in the cut part or near it (within rho's rounding, or the
+  // rounding of the s values themselves).
+  const double reach = std::max(axis_blur / std::sqrt(f.c()), 4 * kEps * (std::abs(lo.s) + std::abs(hi.s)));
+  if (sigma > 0 && s_axis >= lo.s - reach && s_axis <= hi.s + reach) return false;
   double found[4];
   RootCollector probe(f, found, f.minor() / std::sqrt(f.dd()), false, s_min, s_max);
   probe.piece(lo, hi, sigma, true, false);
@@ -440,11 +443,11 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   int ncut = 0;
   cuts[ncut++] = lo;
   double concave_lo = 0, concave_hi = 0;  // empty: convex everywhere
-  // Where the ray passes closest to the axis (NaN for a ray along it).
+  // Where the ray passes closest to the axis (NaN for a ray along it), and
+  // rho's rounding there (see kAxisBlur).
   const double s_axis = f.c() > 0 ? -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c() : kNaN;
+  const double blur = kAxisBlur * (std::abs(o[0].hi) + std::abs(o[1].hi));
   if (f.c() > 0) {
-    // rho's rounding where the ray passes the axis (see kAxisBlur).
-    const double blur = kAxisBlur * (std::abs(o[0].hi) + std::abs(o[1].hi));
     if (f.K() == 0) {
       if (s_axis > lo && s_axis < hi) axis_cut[ncut] = true, cuts[ncut++] = s_axis;
     } else if (f.is_outer()) {
@@ -491,7 +494,7 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       const double sigma = mid > concave_lo && mid < concave_hi ? -1.0 : 1.0;
       const bool inside_window = cuts[i] > s_min && cuts[i + 1] < s_max;
       if (search != Search::Any || inside_window ||
-          !window_misses_piece(f, start, end, sigma, axis_cut[i], axis_cut[i + 1], s_axis, s_min, s_max))
+          !window_misses_piece(f, start, end, sigma, axis_cut[i], axis_cut[i + 1], s_axis, blur, s_min, s_max))
         collector.piece(start, end, sigma, i + 1 == ncut, !(search == Search::Any && inside_window));
       if (search != Search::All) {
         for (int k = 0; k < collector.count(); ++k)

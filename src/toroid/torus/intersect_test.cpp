@@ -328,8 +328,8 @@ TEST(TorusIntersect, TheShadowQuerysStandInForARootLiesInsideTheWindow) {
 // A ray that passes the axis of a nearly horn torus within underflow (found
 // by the fuzzer): its factor's piece is taken as convex, with the narrow
 // spike at the axis unresolved. The shadow query does not cut such a piece
-// where the part inside the window holds the axis passage, and so answers
-// as the nearest-root query does.
+// where the part inside the window holds or nears the axis passage, and so
+// answers as the nearest-root query does.
 TEST(TorusIntersect, AWindowAroundTheAxisPassageOfANearlyHornTorus) {
   const double R = 7.4776450468439327e+20, r = 7.4770802645436046e+20;
   const double o[3] = {-1.3555436176162515e-196, -5.0497568334997517e-195, 2.0236928853657458e-320};
@@ -337,6 +337,13 @@ TEST(TorusIntersect, AWindowAroundTheAxisPassageOfANearlyHornTorus) {
   double t = 0;
   ASSERT_TRUE(intersect_torus_nearest(R, r, o, d, -1.5366581105185789e-24, 1.7895405523539905e-24, &t));
   EXPECT_TRUE(torus_blocks(R, r, o, d, -1.5366581105185789e-24, 1.7895405523539905e-24));
+  // A window that ends within rounding of the passage, from an origin on the
+  // axis of another nearly horn torus: the pair of roots behind it is found.
+  const double R2 = 2.5674598155443507e+151, r2 = 2.5673651826636406e+151;
+  const double o2[3] = {1.538078964275271e-18, 1.5306383611560062e-18, 2.5673651826616232e+151};
+  const double d2[3] = {3.5681192349341961e+46, 0, 2.3542426652068283e-36};
+  ASSERT_TRUE(intersect_torus_nearest(R2, r2, o2, d2, -7.2027592970698048e+104, 0, &t));
+  EXPECT_TRUE(torus_blocks(R2, r2, o2, d2, -7.2027592970698048e+104, 0));
 }
 
 TEST(TorusIntersect, RaysThroughTheHoleMiss) {
