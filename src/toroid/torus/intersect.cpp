@@ -40,7 +40,6 @@ namespace toroid {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Where the ray passes the axis, rho carries the rounding of p's x and y,
 // about eps |o_xy|, so a sample there resolves h'' only where rho is well
 // above it: h_out's concave stretch beside the axis is cut at its edges
@@ -445,7 +444,8 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   double concave_lo = 0, concave_hi = 0;  // empty: convex everywhere
   // Where the ray passes closest to the axis (NaN for a ray along it), and
   // rho's rounding there (see kAxisBlur).
-  const double s_axis = f.c() > 0 ? -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c() : kNaN;
+  const double s_axis =
+      f.c() > 0 ? -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c() : std::numeric_limits<double>::quiet_NaN();
   const double blur = kAxisBlur * (std::abs(o[0].hi) + std::abs(o[1].hi));
   if (f.c() > 0) {
     if (f.K() == 0) {
