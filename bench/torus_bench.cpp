@@ -31,6 +31,17 @@ struct BenchRay {
   double o[3], d[3];
 };
 
+// A random point of the unit ball, not too near its centre, by rejection;
+// returns its squared length.
+double random_in_ball(std::mt19937_64& rng, std::uniform_real_distribution<double>& u, double p[3]) {
+  double len2 = 0;
+  do {
+    for (int i = 0; i < 3; ++i) p[i] = u(rng);
+    len2 = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+  } while (len2 > 1 || len2 < 1e-6);
+  return len2;
+}
+
 std::vector<BenchRay> make_rays(bool hits_only) {
   std::mt19937_64 rng(42);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -38,11 +49,7 @@ std::vector<BenchRay> make_rays(bool hits_only) {
   const double size = kR + kr;
   while (rays.size() < 4096) {
     double dir[3];
-    double len2 = 0;
-    do {
-      for (double& c : dir) c = u(rng);
-      len2 = dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2];
-    } while (len2 > 1 || len2 < 1e-6);
+    const double len2 = random_in_ball(rng, u, dir);
     const double dist = (4 + 2 * u(rng)) * size / std::sqrt(len2);
     BenchRay r;
     const double target[3] = {u(rng) * size, u(rng) * size, u(rng) * kr};
@@ -69,9 +76,8 @@ std::vector<BenchRay> make_surface_rays() {
     double dir[3];
     double len2 = 0;
     do {
-      for (double& c : dir) c = u(rng);
-      len2 = dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2];
-    } while (len2 > 1 || len2 < 1e-6 || dir[0] * n[0] + dir[1] * n[1] + dir[2] * n[2] <= 0);
+      len2 = random_in_ball(rng, u, dir);
+    } while (dir[0] * n[0] + dir[1] * n[1] + dir[2] * n[2] <= 0);
     BenchRay r;
     const double ring[3] = {kR * std::cos(theta), kR * std::sin(theta), 0};
     for (int i = 0; i < 3; ++i) {

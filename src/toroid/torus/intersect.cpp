@@ -352,12 +352,12 @@ enum class Search { All, First, Any };
 // Whether the part of the piece [a.s, b.s] inside the window (s_min, s_max)
 // certainly holds no root: the piece cut at the window's ends, with a sample
 // there whose sign is beyond rounding (the bound two_or_none trusts), and
-// the same sign and tangent tests on what is left. A shadow or reflected ray
-// starts beside the surface it left, so a piece that straddles the window's
-// start holds that surface's root just before it: this spares locating it.
-// A piece that holds a root in the window, or whose answer on the cut piece
-// hangs on a near-tangent minimum, is searched as a whole, so the roots
-// found are those of the search without a window, to the bit. An end
+// the same sign and tangent tests on what is left. A shadow ray starts
+// beside the surface it left, so a piece that straddles the window's start
+// holds that surface's root just before it: this spares locating it. A
+// piece that holds a root in the window, or whose answer on the cut piece
+// hangs on a near-tangent minimum, is searched as a whole, as the
+// nearest-root query searches it, so the two queries agree. An end
 // at an axis cut is not moved: the window's end may lie within rho's
 // rounding of the kink, where a sample's one-sided derivatives are unsure;
 // nor is a convex piece cut where the part left holds the axis passage.
