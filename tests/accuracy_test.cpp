@@ -99,6 +99,37 @@ TEST(ShadowQuery, AgreesWithTheNearestRootOnEveryFamily) {
   EXPECT_GT(decided - blocked, decided / 4);
 }
 
+// A ray that leaves a surface (reflected, refracted) asks for the nearest
+// root from just beyond the root it leaves; the query cuts the piece there
+// rather than locate that root. Its answer is the list's first root in the
+// window, bit for bit, on every ray of every family, for windows that start
+// just before and just after each root (beyond its rounding: a start within
+// it is undecided, as in fuzz/intersect_fuzz.cpp) and end at infinity.
+TEST(NearestQuery, IsTheFirstRootOfTheListForRaysLeavingTheSurface) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  int compared = 0, found = 0;
+  for (const Family& f : families())
+    for (const RayCase& c : f.rays) {
+      double all[4];
+      const int n = intersect_torus(c.major, c.minor, c.origin, c.direction, all);
+      std::vector<double> starts = {-kInf, 0.0};
+      for (int i = 0; i < n; ++i)
+        for (const double k : {1 - 1e-9, 1 + 1e-9, 1 + 1e-6}) starts.push_back(all[i] * k + (all[i] == 0 ? k - 1 : 0));
+      for (const double lo : starts) {
+        const double* first = std::find_if(all, all + n, [lo](double t) { return t > lo; });
+        double t = 0;
+        const bool hit = intersect_torus_nearest(c.major, c.minor, c.origin, c.direction, lo, kInf, &t);
+        ASSERT_EQ(hit, first != all + n) << f.name << " window from " << lo;
+        if (hit) {
+          ASSERT_EQ(t, *first) << f.name << " window from " << lo;
+          ++found;
+        }
+        ++compared;
+      }
+    }
+  EXPECT_GT(found, compared / 2);
+}
+
 TEST(AccuracyHarness, FamilyCountMatchesTheParameterRange) { EXPECT_EQ(families().size(), 13u); }
 
 // The harness must be able to fail: a solver that drops every other root

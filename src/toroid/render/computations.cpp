@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "toroid/shapes/csg.h"
 #include "toroid/shapes/shape.h"
 
 namespace toroid {
@@ -18,8 +19,10 @@ bool same(const Intersection& a, const Intersection& b) { return a.t == b.t && a
 // The containers algorithm: walk the sorted intersections, tracking which
 // objects the ray is inside (in the order entered), up to the hit. Every
 // refracting hit asks: the list of objects lives on the stack while it is
-// short (it never holds more objects than xs holds intersections).
-void refractive_indices(const Intersection& hit, std::span<const Intersection> xs, Computations& comps) {
+// short (it never holds more objects than xs holds intersections). Sets
+// *before, if given, to the list just before the hit.
+void refractive_indices(const Intersection& hit, std::span<const Intersection> xs, Computations& comps,
+                        Containers* before) {
   constexpr std::size_t kOnStack = 16;
   const Shape* on_stack[kOnStack];
   thread_local std::vector<const Shape*> on_heap;
@@ -32,7 +35,16 @@ void refractive_indices(const Intersection& hit, std::span<const Intersection> x
   const auto innermost = [&] { return inside == 0 ? 1.0 : containers[inside - 1]->material().refractive_index; };
   for (const Intersection& x : xs) {
     const bool is_hit = same(x, hit);
-    if (is_hit) comps.n1 = innermost();
+    if (is_hit) {
+      comps.n1 = innermost();
+      if (before != nullptr) {
+        *before = inside <= Containers::kCapacity ? Containers{} : Containers::unknown();
+        for (std::size_t i = 0; i < inside && before->known(); ++i) {
+          if (!carried_in_containers(*containers[i])) *before = Containers::unknown();
+          before->cross(containers[i]);
+        }
+      }
+    }
     std::size_t i = 0;
     while (i < inside && containers[i] != x.object) ++i;
     if (i < inside) {  // leaving it: the others keep their order
@@ -102,8 +114,57 @@ double surface_bias(const Intersection& hit, const Ray& ray) {
 
 Computations prepare_computations(const Intersection& hit, const Ray& ray, const Intersections& xs) {
   Computations comps = prepare(hit, ray);
-  refractive_indices(hit, xs, comps);
+  refractive_indices(hit, xs, comps, nullptr);
   return comps;
+}
+
+Computations prepare_computations(const Intersection& hit, const Ray& ray, const Intersections& xs,
+                                  Containers& before) {
+  Computations comps = prepare(hit, ray);
+  refractive_indices(hit, xs, comps, &before);
+  return comps;
+}
+
+Computations prepare_computations(const Intersection& hit, const Ray& ray, const Containers& before) {
+  Computations comps = prepare(hit, ray);
+  comps.n1 = before.innermost_index();
+  comps.n2 = before.innermost_index_after(hit.object);
+  return comps;
+}
+
+bool carried_in_containers(const Shape& shape) {
+  if (!shape.closed_surface()) return false;
+  for (const Shape* s = shape.parent; s != nullptr; s = s->parent)
+    if (dynamic_cast<const Csg*>(s) != nullptr) return false;
+  return true;
+}
+
+void Containers::cross(const Shape* object) {
+  if (!known_) return;
+  std::size_t i = 0;
+  while (i < count_ && objects_[i] != object) ++i;
+  if (i < count_) {  // leaving it: the others keep their order
+    std::copy(objects_ + i + 1, objects_ + count_, objects_ + i);
+    --count_;
+  } else if (count_ < kCapacity) {
+    objects_[count_++] = object;
+  } else {
+    known_ = false;
+  }
+}
+
+double Containers::innermost_index() const {
+  return count_ == 0 ? 1.0 : objects_[count_ - 1]->material().refractive_index;
+}
+
+double Containers::innermost_index_after(const Shape* object) const {
+  std::size_t i = 0;
+  while (i < count_ && objects_[i] != object) ++i;
+  if (i == count_) return object->material().refractive_index;  // entering it: it is the innermost
+  // Leaving it: the innermost of the others.
+  const std::size_t others = count_ - 1;
+  if (others == 0) return 1.0;
+  return objects_[i == others ? others - 1 : others]->material().refractive_index;
 }
 
 Computations prepare_computations(const Intersection& hit, const Ray& ray) {

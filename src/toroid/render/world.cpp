@@ -122,7 +122,39 @@ double intensity_at(const AreaLight& light, const Tuple& point, const World& wor
   return static_cast<double>(lit) / light.samples;
 }
 
-Color shade_hit(const World& world, const Computations& comps, int remaining) {
+namespace {
+
+Color trace(const World& world, const Ray& ray, int remaining, const Containers& inside);
+
+// Colour arriving along the reflection of the eye ray, which starts inside
+// what the eye ray was inside before the hit.
+Color reflected(const World& world, const Computations& comps, int remaining, const Containers& before) {
+  const double reflective = comps.object->material().reflective;
+  if (remaining <= 0 || reflective == 0) return kBlack;
+  const Ray reflect_ray{comps.over_point, comps.reflectv};
+  return trace(world, reflect_ray, remaining - 1, before) * reflective;
+}
+
+// Colour arriving through the surface: the refracted ray starts inside
+// what the eye ray was inside before the hit, with the hit's object crossed.
+Color refracted(const World& world, const Computations& comps, int remaining, const Containers& before) {
+  const double transparency = comps.object->material().transparency;
+  if (remaining <= 0 || transparency == 0) return kBlack;
+  // Snell's law: n1 sin(i) = n2 sin(t).
+  const double n_ratio = comps.n1 / comps.n2;
+  const double cos_i = dot(comps.eyev, comps.normalv);
+  const double sin2_t = n_ratio * n_ratio * (1 - cos_i * cos_i);
+  if (sin2_t > 1) return kBlack;  // total internal reflection
+  const double cos_t = std::sqrt(1.0 - sin2_t);
+  const Tuple direction = comps.normalv * (n_ratio * cos_i - cos_t) - comps.eyev * n_ratio;
+  const Ray refract_ray{comps.under_point, direction};
+  Containers after = before;
+  after.cross(comps.object);  // (known only for a hit on a shape carried_in_containers)
+  return trace(world, refract_ray, remaining - 1, after) * transparency;
+}
+
+// shade_hit, for a ray that started inside `before` (or unknown).
+Color shade(const World& world, const Computations& comps, int remaining, const Containers& before) {
   const Material& m = comps.object->material();
   Color surface = kBlack;
   for (const PointLight& light : world.lights) {
@@ -146,29 +178,41 @@ Color shade_hit(const World& world, const Computations& comps, int remaining) {
   }
   // Emission: an exact no-op for the default black (x + 0 == x), skipped.
   if (m.emissive.r != 0 || m.emissive.g != 0 || m.emissive.b != 0) surface += m.emissive;
-  const Color reflected = reflected_color(world, comps, remaining);
-  const Color refracted = refracted_color(world, comps, remaining);
+  const Color reflected_part = reflected(world, comps, remaining, before);
+  const Color refracted_part = refracted(world, comps, remaining, before);
   if (m.reflective > 0 && m.transparency > 0) {
     const double reflectance = schlick(comps);
-    return surface + reflected * reflectance + refracted * (1 - reflectance);
+    return surface + reflected_part * reflectance + refracted_part * (1 - reflectance);
   }
-  return surface + reflected + refracted;
+  return surface + reflected_part + refracted_part;
 }
 
-Color color_at(const World& world, const Ray& ray, int remaining) {
+Color trace(const World& world, const Ray& ray, int remaining, const Containers& inside) {
   ++rays_traced_on_this_thread();
-  if (indexed(world) && !world.index.any_transparent()) {
-    // Nothing refracts, so n1 and n2 go unread: the nearest hit is enough.
-    // (Asking for the nearest hit first and for the list only when it
-    // refracts costs more than it saves on scenes with much glass.)
+  const bool refraction = !indexed(world) || world.index.any_transparent();
+  if (!refraction || inside.known()) {
+    // The nearest hit is enough: nothing refracts, so n1 and n2 go unread,
+    // or the ray carries the objects it starts inside, and n1 and n2 follow
+    // from those and the hit's object.
     Intersection nearest;
     if (!intersect_nearest(world, ray, nearest)) return world.environment.radiance(ray.direction);
-    return shade_hit(world, prepare_computations(nearest, ray), remaining);
+    if (!refraction) return shade(world, prepare_computations(nearest, ray), remaining, inside);
+    // Only refracting hits pass the list on (the rays spawned at others
+    // start from an unknown list: on the cheap shapes the list along the
+    // line costs no more than the nearest hit). n1 and n2 of a refracting
+    // plane, triangle or CSG primitive come from the book's list along
+    // this ray, below.
+    if (nearest.object->material().transparency == 0)
+      return shade(world, prepare_computations(nearest, ray), remaining, Containers::unknown());
+    if (carried_in_containers(*nearest.object))
+      return shade(world, prepare_computations(nearest, ray, inside), remaining, inside);
   }
-  // Refraction needs n1 and n2, from every intersection along the ray up
-  // to the hit (the containers algorithm). One buffer per thread, reused
-  // across rays. Recursion is safe: the intersections are consumed by
-  // prepare_computations before shade_hit can cast (and so overwrite them
+  // A ray that starts in an unknown place (a camera ray), or refracts at a
+  // shape whose crossings cannot be carried: n1 and n2 from every
+  // intersection along the ray up to the hit (the containers algorithm),
+  // negative t included. One buffer per thread, reused across rays.
+  // Recursion is safe: the intersections are consumed by
+  // prepare_computations before shade can cast (and so overwrite them
   // with) the next ray.
   thread_local Intersections xs;
   const Intersection* h = nullptr;
@@ -179,35 +223,35 @@ Color color_at(const World& world, const Ray& ray, int remaining) {
     h = hit(xs);
   }
   if (h == nullptr) return world.environment.radiance(ray.direction);
-  // Only a refracting hit reads n1 and n2 (refracted_color, schlick): the
-  // list is cut at the hit, sorted, and the containers walked, for those
-  // alone.
-  if (h->object->material().transparency == 0) return shade_hit(world, prepare_computations(*h, ray), remaining);
+  // Only a refracting hit reads n1 and n2 (refracted_color, schlick), and
+  // passes the containers on: the list is cut at the hit, sorted, and the
+  // containers walked, for those alone.
+  if (h->object->material().transparency == 0)
+    return shade(world, prepare_computations(*h, ray), remaining, Containers::unknown());
   const Intersection found = *h;
   std::erase_if(xs, [&found](const Intersection& x) { return x.t > found.t; });
   sort_intersections(xs);
-  return shade_hit(world, prepare_computations(found, ray, xs), remaining);
+  Containers before;
+  const Computations comps = prepare_computations(found, ray, xs, before);
+  return shade(world, comps, remaining, carried_in_containers(*found.object) ? before : Containers::unknown());
+}
+
+}  // namespace
+
+Color shade_hit(const World& world, const Computations& comps, int remaining) {
+  return shade(world, comps, remaining, Containers::unknown());
+}
+
+Color color_at(const World& world, const Ray& ray, int remaining) {
+  return trace(world, ray, remaining, Containers::unknown());
 }
 
 Color reflected_color(const World& world, const Computations& comps, int remaining) {
-  const double reflective = comps.object->material().reflective;
-  if (remaining <= 0 || reflective == 0) return kBlack;
-  const Ray reflect_ray{comps.over_point, comps.reflectv};
-  return color_at(world, reflect_ray, remaining - 1) * reflective;
+  return reflected(world, comps, remaining, Containers::unknown());
 }
 
 Color refracted_color(const World& world, const Computations& comps, int remaining) {
-  const double transparency = comps.object->material().transparency;
-  if (remaining <= 0 || transparency == 0) return kBlack;
-  // Snell's law: n1 sin(i) = n2 sin(t).
-  const double n_ratio = comps.n1 / comps.n2;
-  const double cos_i = dot(comps.eyev, comps.normalv);
-  const double sin2_t = n_ratio * n_ratio * (1 - cos_i * cos_i);
-  if (sin2_t > 1) return kBlack;  // total internal reflection
-  const double cos_t = std::sqrt(1.0 - sin2_t);
-  const Tuple direction = comps.normalv * (n_ratio * cos_i - cos_t) - comps.eyev * n_ratio;
-  const Ray refract_ray{comps.under_point, direction};
-  return color_at(world, refract_ray, remaining - 1) * transparency;
+  return refracted(world, comps, remaining, Containers::unknown());
 }
 
 }  // namespace toroid

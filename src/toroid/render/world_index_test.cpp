@@ -66,9 +66,11 @@ TEST(WorldIndex, GlassTorusWorldLooksTheSame) { expect_same_picture_with_and_wit
 
 TEST(WorldIndex, ColorAtIsTheBooksWithTheWholeList) {
   // color_at takes shortcuts (the list only up to the hit and unsorted,
-  // the containers only for a refracting hit); the book shades every ray
-  // from the sorted list of all intersections. Camera rays, and rays from
-  // inside the glass tori (their hits leave the glass: n1 is the glass's).
+  // the containers only for a refracting hit, and the rays a glass torus
+  // spawns carry theirs and ask for the nearest hit); the book shades every
+  // ray from the sorted list of all intersections. Camera rays, and rays
+  // from inside the glass tori (their hits leave the glass: n1 is the
+  // glass's).
   World w = torus_world(true);
   index_objects(w);
   Camera camera(48, 32, 1.0);

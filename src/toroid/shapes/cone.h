@@ -15,6 +15,7 @@ class Cone : public Primitive<Cone> {
   bool closed = false;
 
   BoundingBox bounds() const override;
+  bool closed_surface() const override { return closed && minimum > -BoundingBox::kInf && maximum < BoundingBox::kInf; }
   int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };

@@ -11,6 +11,7 @@ class Cube : public Primitive<Cube> {
   BoundingBox bounds() const override { return {point(-1, -1, -1), point(1, 1, 1)}; }
   // Half of bounds()'s side, without building the box: asked at every hit.
   double half_thickness() const override { return 1.0; }
+  bool closed_surface() const override { return true; }
   int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };

@@ -15,6 +15,7 @@ class Cylinder : public Primitive<Cylinder> {
   bool closed = false;
 
   BoundingBox bounds() const override { return {point(-1, minimum, -1), point(1, maximum, 1)}; }
+  bool closed_surface() const override { return closed && minimum > -BoundingBox::kInf && maximum < BoundingBox::kInf; }
   int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const;
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 };

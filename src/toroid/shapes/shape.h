@@ -98,6 +98,14 @@ class Shape {
   // Shapes that know it without building their box override it.
   virtual double half_thickness() const;
 
+  // Whether the shape's surface bounds a solid: every line crosses it an even
+  // number of times, so that whether a point lies inside is the parity of
+  // the crossings on either side of it (a sphere, a cube, a whole or capped
+  // torus, a closed finite cylinder or cone; not a plane, a triangle, an
+  // open tube). The renderer carries the list of such shapes a ray is
+  // inside to the rays it spawns (render/computations.h, Containers).
+  virtual bool closed_surface() const { return false; }
+
   // CSG: whether `other` is this shape or one of its descendants.
   virtual bool includes(const Shape* other) const { return other == this; }
 

@@ -15,6 +15,7 @@ class Sphere : public Primitive<Sphere> {
   BoundingBox bounds() const override { return {point(-1, -1, -1), point(1, 1, 1)}; }
   // Half of bounds()'s side, without building the box: asked at every hit.
   double half_thickness() const override { return 1.0; }
+  bool closed_surface() const override { return true; }
   // Inline: the renderer's three queries each inline it, and the sphere's
   // arithmetic is cheaper than a call and the zeroing of an unread array.
   int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {

@@ -90,6 +90,7 @@ class Torus : public Primitive<Torus, kMaxTorusHits> {
   bool caps() const { return caps_; }
   // Whether caps are in effect: asked for, a partial sweep, minor <= major.
   bool capped() const { return capped_; }
+  bool closed_surface() const override { return partial_ == nullptr || capped_; }
   // The face a hit of this torus lies on (the tube unless capped).
   static TorusFace face_of(const Intersection& hit) { return static_cast<TorusFace>(static_cast<int>(hit.u)); }
 

@@ -145,6 +145,9 @@ class RootCollector {
         s_min_(s_min),
         s_max_(s_max) {}
   TOROID_HD int count() const { return n_; }
+  // Whether the next piece, which straddles the window's start, may leave
+  // out a pair's roots that certainly lie before the start (two_or_none).
+  TOROID_HD void set_start_cut(bool on) { start_cut_ = on; }
   // Whether a piece's answer hung on a near-tangent minimum, whose sign can
   // depend on the bracket it was searched on.
   TOROID_HD bool met_near_tangent() const { return met_near_tangent_; }
@@ -197,6 +200,11 @@ class RootCollector {
           push(m.s);
           if (!ends_search(m.s)) push(m.s);
         } else if (first_only_) {
+          switch (start_cut_ ? pair_before_start(a, m, sigma) : BeforeStart::Unsure) {
+            case BeforeStart::Both: return;
+            case BeforeStart::First: push(root(m, b, b, sigma > 0, false)); return;
+            case BeforeStart::Unsure: break;
+          }
           const double first = root(a, m, a, sigma < 0, false);
           push(first);
           if (!ends_search(first)) push(root(m, b, b, sigma > 0, false));
@@ -241,6 +249,26 @@ class RootCollector {
   }
 
   TOROID_HD bool ends_search(double s) const { return first_only_ && s > s_min_ && s < s_max_; }
+
+  // Which roots of a pair (g(m) < 0 between them, g convex) certainly lie
+  // before the window's start, for a ray that starts beside a surface it
+  // leaves. The search of the whole pair locates the first root on (a, m),
+  // so one before m lies before a start beyond m; otherwise g at the start
+  // decides, beyond rounding (the bound two_or_none trusts): negative, the
+  // start lies between the roots; positive and rising, past both. The roots
+  // the search goes on to locate are located as before, so their bits are
+  // the same; only the work on roots the query would drop is spared. (A
+  // start before m where a's tangent, a lower bound of g, is still
+  // positive lies before the pair: no sample is spent there.)
+  enum class BeforeStart { Unsure, First, Both };
+  TOROID_HD BeforeStart pair_before_start(const Sample& a, const Sample& m, double sigma) const {
+    if (m.s > s_min_ && sigma * (a.h + a.dh * (s_min_ - a.s)) > 0) return BeforeStart::Unsure;
+    const Sample w = f_.sample(s_min_);
+    const double gw = sigma * w.h, uncertain = 1e-6 * f_.minor() * f_.minor();
+    if (gw > uncertain && sigma * w.dh >= 0) return BeforeStart::Both;
+    if (m.s <= s_min_ || gw < -uncertain) return BeforeStart::First;
+    return BeforeStart::Unsure;
+  }
 
   // The root of h on (a.s, b.s), where h changes sign once; Newton starts
   // from `start`'s step, `lo_negative` tells the sign of h at a.s.
@@ -342,12 +370,23 @@ class RootCollector {
   double s_min_, s_max_;
   int n_ = 0;
   bool met_near_tangent_ = false;
+  bool start_cut_ = false;
 };
 
 // What a search wants: every root, the first one in the window, or only
 // whether the window holds one (then a piece inside the window stops the
 // search as soon as it holds a root, with a point of it for the root).
 enum class Search { All, First, Any };
+
+// Whether the ray's passage by the axis (s_axis) lies in [lo, hi] or within
+// rho's rounding of it (axis_blur, see kAxisBlur), or the rounding of the s
+// values themselves: there a convex piece may hold a spike of h'' narrower
+// than the samples resolve, and a search of part of the piece and one of
+// the whole can disagree.
+TOROID_HD bool nears_axis_passage(const TorusFactor& f, double s_axis, double axis_blur, double lo, double hi) {
+  const double reach = std::max(axis_blur / std::sqrt(f.c()), 4 * kEps * (std::abs(lo) + std::abs(hi)));
+  return s_axis >= lo - reach && s_axis <= hi + reach;
+}
 
 // Whether the part of the piece [a.s, b.s] inside the window (s_min, s_max)
 // certainly holds no root: the piece cut at the window's ends, with a sample
@@ -377,13 +416,8 @@ enum class Search { All, First, Any };
     if (!(std::abs(hi.h) > uncertain)) return false;
   }
   if (!(lo.s < hi.s)) return false;
-  // A convex piece may hold the ray's passage by the axis as a spike of h''
-  // narrower than the samples resolve (see kAxisBlur), where the tests of
-  // the piece whole and of the cut part can disagree: not cut where the
-  // passage lies in the cut part or near it (within rho's rounding, or the
-  // rounding of the s values themselves).
-  const double reach = std::max(axis_blur / std::sqrt(f.c()), 4 * kEps * (std::abs(lo.s) + std::abs(hi.s)));
-  if (sigma > 0 && s_axis >= lo.s - reach && s_axis <= hi.s + reach) return false;
+  // Not cut where the cut part of a convex piece nears the axis passage.
+  if (sigma > 0 && nears_axis_passage(f, s_axis, axis_blur, lo.s, hi.s)) return false;
   double found[4];
   RootCollector probe(f, found, f.minor() / std::sqrt(f.dd()), false, s_min, s_max);
   probe.piece(lo, hi, sigma, true, false);
@@ -493,6 +527,14 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       const double mid = 0.5 * (cuts[i] + cuts[i + 1]);
       const double sigma = mid > concave_lo && mid < concave_hi ? -1.0 : 1.0;
       const bool inside_window = cuts[i] > s_min && cuts[i + 1] < s_max;
+      // A convex piece that straddles the window's start, away from the
+      // axis passage (see window_misses_piece): the nearest-root query may
+      // leave out a pair's roots before the start (RootCollector::piece).
+      bool start_cut = search == Search::First && sigma > 0 && cuts[i] < s_min && !axis_cut[i];
+      if (start_cut) {
+        start_cut = !nears_axis_passage(f, s_axis, blur, s_min, cuts[i + 1]);
+      }
+      collector.set_start_cut(start_cut);
       if (search != Search::Any || inside_window ||
           !window_misses_piece(f, start, end, sigma, axis_cut[i], axis_cut[i + 1], s_axis, blur, s_min, s_max))
         collector.piece(start, end, sigma, i + 1 == ncut, !(search == Search::Any && inside_window));
