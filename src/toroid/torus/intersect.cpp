@@ -126,6 +126,34 @@ TOROID_HD double first_guess(const Sample& from, double lo, double hi) {
   return newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
 }
 
+// The caller's window (t_min, t_max), as the solver sees it: s = t - t_shift
+// in the shifted frame, and t scaled by 2^-exponent when the torus or the
+// direction was rescaled (solve_rescaled). s_min and s_max choose the pieces
+// to search; whether a root s lies inside is decided on the t value the
+// caller gets (t_shift + s, rounded, then scaled back, rounded again if it
+// is subnormal), as the caller decides it. A search for the first root that
+// stopped at a root inside (s_min, s_max) whose t rounds onto t_min would
+// report none (a caller that asks for the root after the one it has, from
+// exactly it).
+struct Window {
+  double s_min, s_max;
+  double t_shift;
+  double t_min, t_max;  // the caller's
+  int exponent;
+  TOROID_HD bool holds(double s) const {
+    double t = t_shift + s;
+    if (exponent != 0) t = std::scalbn(t, exponent);
+    return t > t_min && t < t_max;
+  }
+};
+
+// The caller's window and the power of two its t values are scaled by to
+// give the solver's.
+struct CallerWindow {
+  double t_min, t_max;
+  int exponent;
+};
+
 // Collects the roots of one factor, in ascending order, piece by piece. On a
 // piece the factor h is convex or concave, known from where the piece lies;
 // with sigma = +1 or -1, g = sigma h is convex there, and the cases are few:
@@ -133,17 +161,17 @@ TOROID_HD double first_guess(const Sample& from, double lo, double hi) {
 // and falling then rising: none or two, decided by the tangents at the ends.
 class RootCollector {
  public:
-  // With `first_only`, a pair whose first root lies inside (s_min, s_max)
+  // With `first_only`, a pair whose first root lies inside the window
   // leaves its second root out: the search stops at the first anyway.
-  TOROID_HD RootCollector(const TorusFactor& f, double* out, double length_scale, bool first_only, double s_min,
-                          double s_max)
+  TOROID_HD RootCollector(const TorusFactor& f, double* out, double length_scale, bool first_only, const Window& window)
       : f_(f),
         out_(out),
         tol_root_(2 * kEps * length_scale),
         tol_extremum_(1e-10 * length_scale),
         first_only_(first_only),
-        s_min_(s_min),
-        s_max_(s_max) {}
+        window_(window),
+        s_min_(window.s_min),
+        s_max_(window.s_max) {}
   TOROID_HD int count() const { return n_; }
   // Whether the next piece, which straddles the window's start, may leave
   // out a pair's roots that certainly lie before the start (two_or_none).
@@ -248,7 +276,7 @@ class RootCollector {
     if (!ends_search(first)) push(locate ? root(sm, b, b, sigma > 0, true) : m);
   }
 
-  TOROID_HD bool ends_search(double s) const { return first_only_ && s > s_min_ && s < s_max_; }
+  TOROID_HD bool ends_search(double s) const { return first_only_ && window_.holds(s); }
 
   // Which roots of a pair (g(m) < 0 between them, g convex) certainly lie
   // before the window's start, for a ray that starts beside a surface it
@@ -367,6 +395,7 @@ class RootCollector {
   double* out_;
   double tol_root_, tol_extremum_;
   bool first_only_;
+  const Window& window_;
   double s_min_, s_max_;
   int n_ = 0;
   bool met_near_tangent_ = false;
@@ -402,7 +431,8 @@ TOROID_HD bool nears_axis_passage(const TorusFactor& f, double s_axis, double ax
 // nor is a convex piece cut where the part left holds the axis passage.
 [[gnu::noinline]] TOROID_HD bool window_misses_piece(const TorusFactor& f, const Sample& a, const Sample& b,
                                                      double sigma, bool kink_at_a, bool kink_at_b, double s_axis,
-                                                     double axis_blur, double s_min, double s_max) {
+                                                     double axis_blur, const Window& window) {
+  const double s_min = window.s_min, s_max = window.s_max;
   const double uncertain = 1e-6 * f.minor() * f.minor();
   Sample lo = a, hi = b;
   if (lo.s < s_min) {
@@ -419,16 +449,17 @@ TOROID_HD bool nears_axis_passage(const TorusFactor& f, double s_axis, double ax
   // Not cut where the cut part of a convex piece nears the axis passage.
   if (sigma > 0 && nears_axis_passage(f, s_axis, axis_blur, lo.s, hi.s)) return false;
   double found[4];
-  RootCollector probe(f, found, f.minor() / std::sqrt(f.dd()), false, s_min, s_max);
+  RootCollector probe(f, found, f.minor() / std::sqrt(f.dd()), false, window);
   probe.piece(lo, hi, sigma, true, false);
   return probe.count() == 0 && !probe.met_near_tangent();
 }
 
 // Roots of one factor inside the ball |p| <= radius, in the shifted frame,
-// ascending, restricted to [s_min, s_max]. Pieces wholly outside that window
+// ascending, restricted to the window. Pieces wholly outside (s_min, s_max)
 // are skipped; see Search.
 TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3], double radius,
-                           double s_min, double s_max, Search search, double* out) {
+                           const Window& window, Search search, double* out) {
+  const double s_min = window.s_min, s_max = window.s_max;
   // Ball: dd s^2 + 2 b s + (|o|^2 - radius^2) = 0. The origin is the ray's
   // point nearest the centre, so b is ~0 and the chord is well conditioned.
   const double b = o[0].hi * d[0] + o[1].hi * d[1] + o[2].hi * d[2];
@@ -516,7 +547,7 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   }
   cuts[ncut] = hi;
 
-  RootCollector collector(f, out, f.minor() / std::sqrt(f.dd()), search != Search::All, s_min, s_max);
+  RootCollector collector(f, out, f.minor() / std::sqrt(f.dd()), search != Search::All, window);
   Sample start = f.sample(lo, +1.0);
   for (int i = 0; i < ncut; ++i) {
     // Each cut is sampled once and shared by the pieces on either side (from
@@ -536,11 +567,11 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       }
       collector.set_start_cut(start_cut);
       if (search != Search::Any || inside_window ||
-          !window_misses_piece(f, start, end, sigma, axis_cut[i], axis_cut[i + 1], s_axis, blur, s_min, s_max))
+          !window_misses_piece(f, start, end, sigma, axis_cut[i], axis_cut[i + 1], s_axis, blur, window))
         collector.piece(start, end, sigma, i + 1 == ncut, !(search == Search::Any && inside_window));
       if (search != Search::All) {
         for (int k = 0; k < collector.count(); ++k)
-          if (out[k] > s_min && out[k] < s_max) return collector.count();
+          if (window.holds(out[k])) return collector.count();
       }
     }
     start = next_start;
@@ -576,21 +607,24 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
 }
 
 // The default solver on a torus and direction in_solver_range; writes roots
-// as t values. Inlined into both callers, so that the common path is one
-// function, as it would be without solve_rescaled.
+// as t values. (t_min, t_max) is the window in the solver's scale, `caller`
+// the window as the caller will test the roots against it. Inlined into both
+// callers, so that the common path is one function, as it would be without
+// solve_rescaled.
 [[gnu::always_inline]] TOROID_HD inline int solve_in_range(double R, double r, const double origin[3],
-                                                           const double d[3], double t_min, double t_max, Search search,
-                                                           double t[4]) {
+                                                           const double d[3], double t_min, double t_max,
+                                                           const CallerWindow& caller, Search search, double t[4]) {
   const ShiftedRay ray = shift_to_nearest_centre_point(origin, d);
-  const double s_min = t_min - ray.t_shift, s_max = t_max - ray.t_shift;
+  const Window window{t_min - ray.t_shift, t_max - ray.t_shift, ray.t_shift,
+                      caller.t_min,        caller.t_max,        caller.exponent};
   double s_out[4], s_in[4];
   const TorusFactor outer(ray.o, d, R, r, -1.0);
   // With the lemon's roots to merge, the outer sheet's are all needed.
-  int n_out = factor_roots(outer, ray.o, d, R + r, s_min, s_max, r < R ? search : Search::All, s_out);
+  int n_out = factor_roots(outer, ray.o, d, R + r, window, r < R ? search : Search::All, s_out);
   int n_in = 0;
   if (r >= R) {  // the spindle's lemon (a point for the horn torus)
     const TorusFactor inner(ray.o, d, R, r, +1.0);
-    n_in = factor_roots(inner, ray.o, d, std::sqrt((r - R) * (r + R)), s_min, s_max, Search::All, s_in);
+    n_in = factor_roots(inner, ray.o, d, std::sqrt((r - R) * (r + R)), window, Search::All, s_in);
   }
   // Merge the two ascending lists.
   int n = 0, i = 0, j = 0;
@@ -628,7 +662,7 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
   const double t_limit = std::scalbn(std::numeric_limits<double>::max(), j - k);
   const double lo = std::max(std::scalbn(t_min, j - k), -t_limit), hi = std::min(std::scalbn(t_max, j - k), t_limit);
   double found[4];
-  const int m = solve_in_range(R_s, r_s, o_s, d_s, lo, hi, search, found);
+  const int m = solve_in_range(R_s, r_s, o_s, d_s, lo, hi, CallerWindow{t_min, t_max, k - j}, search, found);
   int n = 0;
   for (int i = 0; i < m; ++i)
     if (const double ti = std::scalbn(found[i], k - j); std::isfinite(ti)) t[n++] = ti;
@@ -644,7 +678,7 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
 TOROID_HD int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
                             Search search, double t[4]) {
   if (!in_solver_range(R, r, d)) return solve_rescaled(R, r, origin, d, t_min, t_max, search, t);
-  return solve_in_range(R, r, origin, d, t_min, t_max, search, t);
+  return solve_in_range(R, r, origin, d, t_min, t_max, CallerWindow{t_min, t_max, 0}, search, t);
 }
 
 // Sort a few values in place (insertion sort: at most four).

@@ -41,7 +41,9 @@ TOROID_HD int intersect_torus(double major, double minor, const double origin[3]
 
 // The nearest root in the open interval (t_min, t_max), as a renderer needs
 // it; same accuracy as intersect_torus, with an early exit. Returns false and
-// leaves *t unchanged when there is none.
+// leaves *t unchanged when there is none. With t_min a root this returned
+// (or intersect_torus listed), it is the next root: the roots of a ray can be
+// walked one call at a time.
 TOROID_HD bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
                                        double t_min, double t_max, double* t,
                                        TorusSolver solver = TorusSolver::Default);

@@ -222,6 +222,25 @@ TEST(TorusIntersect, TheNearestRootIsTheFirstRepresentableOne) {
   EXPECT_TRUE(torus_blocks(1, 0.25, o, d, -kInf, 0));
 }
 
+// From exactly a root, the nearest root is the next one: the search decides
+// whether a root lies in the window on the t value the caller gets. On a
+// torus rescaled into the solver's range (here about 1e-307 across) with
+// roots at subnormal t, scaling t back rounds it: the root found just
+// inside the scaled window is t_min itself once scaled back.
+TEST(TorusIntersect, FromARootOfARescaledTorusTheNearestRootIsTheNext) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double R = 6.9803000881154317e-307, r = 1.2547219690010596e-314;
+  const double o[3] = {6.9803002135876285e-307, 0, 0}, d[3] = {-0.0, 1, 0};
+  double all[4];
+  ASSERT_EQ(intersect_torus(R, r, o, d, all), 2);
+  ASSERT_LT(all[0], all[1]);
+  double t = 0;
+  ASSERT_TRUE(intersect_torus_nearest(R, r, o, d, all[0], kInf, &t));
+  EXPECT_EQ(t, all[1]);
+  EXPECT_TRUE(torus_blocks(R, r, o, d, all[0], kInf));
+  EXPECT_FALSE(intersect_torus_nearest(R, r, o, d, all[1], kInf, &t));
+}
+
 // Shadow rays leave a surface: from 1e-5 above random points of the torus,
 // in random directions away from it, towards a light at infinity, beyond
 // the torus or between its roots. torus_blocks skips a piece that straddles
