@@ -169,9 +169,7 @@ class RootCollector {
         tol_root_(2 * kEps * length_scale),
         tol_extremum_(1e-10 * length_scale),
         first_only_(first_only),
-        window_(window),
-        s_min_(window.s_min),
-        s_max_(window.s_max) {}
+        window_(window) {}
   TOROID_HD int count() const { return n_; }
   // Whether the next piece, which straddles the window's start, may leave
   // out a pair's roots that certainly lie before the start (two_or_none).
@@ -290,11 +288,12 @@ class RootCollector {
   // positive lies before the pair: no sample is spent there.)
   enum class BeforeStart { Unsure, First, Both };
   TOROID_HD BeforeStart pair_before_start(const Sample& a, const Sample& m, double sigma) const {
-    if (m.s > s_min_ && sigma * (a.h + a.dh * (s_min_ - a.s)) > 0) return BeforeStart::Unsure;
-    const Sample w = f_.sample(s_min_);
+    const double s_min = window_.s_min;
+    if (m.s > s_min && sigma * (a.h + a.dh * (s_min - a.s)) > 0) return BeforeStart::Unsure;
+    const Sample w = f_.sample(s_min);
     const double gw = sigma * w.h, uncertain = 1e-6 * f_.minor() * f_.minor();
     if (gw > uncertain && sigma * w.dh >= 0) return BeforeStart::Both;
-    if (m.s <= s_min_ || gw < -uncertain) return BeforeStart::First;
+    if (m.s <= s_min || gw < -uncertain) return BeforeStart::First;
     return BeforeStart::Unsure;
   }
 
@@ -396,7 +395,6 @@ class RootCollector {
   double tol_root_, tol_extremum_;
   bool first_only_;
   const Window& window_;
-  double s_min_, s_max_;
   int n_ = 0;
   bool met_near_tangent_ = false;
   bool start_cut_ = false;
