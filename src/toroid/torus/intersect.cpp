@@ -126,32 +126,30 @@ TOROID_HD double first_guess(const Sample& from, double lo, double hi) {
   return newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
 }
 
-// The caller's window (t_min, t_max), as the solver sees it: s = t - t_shift
-// in the shifted frame, and t scaled by 2^-exponent when the torus or the
-// direction was rescaled (solve_rescaled). s_min and s_max choose the pieces
-// to search; whether a root s lies inside is decided on the t value the
-// caller gets (t_shift + s, rounded, then scaled back, rounded again if it
-// is subnormal), as the caller decides it. A search for the first root that
+// The window (t_min, t_max) as the caller will test the roots against it.
+struct CallerWindow {
+  double t_min, t_max;
+  int exponent;  // the solver's t times 2^exponent is the caller's
+};
+
+// The caller's window as the solver sees it: s = t - t_shift in the shifted
+// frame, and t scaled by 2^-exponent when the torus or the direction was
+// rescaled (solve_rescaled). s_min and s_max choose the pieces to search;
+// whether a root s lies inside is decided on the t value the caller gets
+// (t_shift + s, rounded, then scaled back, rounded again if it is
+// subnormal), as the caller decides it. A search for the first root that
 // stopped at a root inside (s_min, s_max) whose t rounds onto t_min would
 // report none (a caller that asks for the root after the one it has, from
 // exactly it).
 struct Window {
   double s_min, s_max;
   double t_shift;
-  double t_min, t_max;  // the caller's
-  int exponent;
+  CallerWindow caller;
   TOROID_HD bool holds(double s) const {
     double t = t_shift + s;
-    if (exponent != 0) t = std::scalbn(t, exponent);
-    return t > t_min && t < t_max;
+    if (caller.exponent != 0) t = std::scalbn(t, caller.exponent);
+    return t > caller.t_min && t < caller.t_max;
   }
-};
-
-// The caller's window and the power of two its t values are scaled by to
-// give the solver's.
-struct CallerWindow {
-  double t_min, t_max;
-  int exponent;
 };
 
 // Collects the roots of one factor, in ascending order, piece by piece. On a
@@ -613,8 +611,7 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
                                                            const double d[3], double t_min, double t_max,
                                                            const CallerWindow& caller, Search search, double t[4]) {
   const ShiftedRay ray = shift_to_nearest_centre_point(origin, d);
-  const Window window{t_min - ray.t_shift, t_max - ray.t_shift, ray.t_shift,
-                      caller.t_min,        caller.t_max,        caller.exponent};
+  const Window window{t_min - ray.t_shift, t_max - ray.t_shift, ray.t_shift, caller};
   double s_out[4], s_in[4];
   const TorusFactor outer(ray.o, d, R, r, -1.0);
   // With the lemon's roots to merge, the outer sheet's are all needed.
