@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "toroid/render/light.h"
 
-#include <bit>
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <initializer_list>
 
@@ -22,8 +23,20 @@ AreaLight::AreaLight(const Tuple& corner_, const Tuple& full_uvec, int usteps_, 
 
 std::uint64_t AreaLight::jitter_key(const Tuple& p) const {
   if (!jitter) return 0;
-  return splitmix64(std::bit_cast<std::uint64_t>(p.x) ^
-                    splitmix64(std::bit_cast<std::uint64_t>(p.y) ^ splitmix64(std::bit_cast<std::uint64_t>(p.z))));
+  // The point on a grid of 2^-36 times its largest coordinate's power of
+  // two: a point that moves by a few roundings (another order of
+  // operations, a fused multiply-add, another way to intersect a shape)
+  // keeps its cell, and so its samples, but for the rare one beside a
+  // cell's edge; the points of neighbouring pixels lie many cells apart.
+  const double largest = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  std::uint64_t cell[3] = {0, 0, 0};
+  if (largest > 0 && std::isfinite(largest)) {
+    const int shift = 36 - std::ilogb(largest);
+    const double coordinates[3] = {p.x, p.y, p.z};
+    for (int i = 0; i < 3; ++i)
+      cell[i] = static_cast<std::uint64_t>(std::llround(std::scalbn(coordinates[i], shift)));  // |.| < 2^38
+  }
+  return splitmix64(cell[0] ^ splitmix64(cell[1] ^ splitmix64(cell[2])));
 }
 
 Tuple AreaLight::sample(std::uint64_t key, int u, int v) const {

@@ -41,7 +41,9 @@ struct AreaLight {
     return corner + uvec * (u + ju) + vvec * (v + jv);
   }
   // What places every cell's jittered sample when shading `point`: a hash of
-  // the point's coordinates (computed once per shade).
+  // the point's coordinates read to about 2^-36 of its size, so that the
+  // noise does not move with the last bits of the point (computed once per
+  // shade).
   std::uint64_t jitter_key(const Tuple& point) const;
   // The sample of cell (u, v) for a jitter key: the cell's centre without
   // jitter, else an offset in [0, 1)^2 within the cell hashed from the key and

@@ -5,8 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "support/approx.h"
 #include "support/sequence.h"
+#include "toroid/math/hash.h"
 #include "toroid/render/world.h"
 
 namespace toroid {
@@ -125,6 +130,30 @@ TEST(AreaLights, JitteredSamplesStayInTheirCellsAndDependOnlyOnThePoint) {
   EXPECT_TRUE(differs);
   light.jitter = false;
   EXPECT_APPROX(light.sample(light.jitter_key(point(0.3, 2, -1)), 3, 1), point(1.75, 0, 0.75));
+}
+
+// The noise does not move with the last bits of the shaded point: a point
+// a few roundings away keeps its key (the samples of a shape intersected
+// another way, or built with fused multiply-adds, stay where they were).
+TEST(AreaLights, APointAFewRoundingsAwayKeepsItsJitterKey) {
+  AreaLight light = book_area_light();
+  light.jitter = true;
+  std::uint64_t state = 99;
+  int kept = 0, moved_apart = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const auto coordinate = [&] { return (2 * unit_interval(state = splitmix64(state)) - 1) * 20; };
+    const Tuple p = point(coordinate(), coordinate(), coordinate());
+    // Each coordinate moved by up to 4 units in the last place of the
+    // largest one (how far a hit point's rounding reaches).
+    const double ulp = std::ldexp(std::numeric_limits<double>::epsilon(),
+                                  std::ilogb(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)})));
+    const Tuple q = p + vector(3 * ulp, -4 * ulp, ulp);
+    kept += light.jitter_key(q) == light.jitter_key(p) ? 1 : 0;
+    // A point a millionth of the scene away has samples of its own.
+    moved_apart += light.jitter_key(p + vector(0, 2e-5, 0)) != light.jitter_key(p) ? 1 : 0;
+  }
+  EXPECT_GE(kept, 995);  // all but the rare point beside a cell's edge
+  EXPECT_EQ(moved_apart, 1000);
 }
 
 TEST(AreaLights, AnAreaLightWhollyBehindASurfaceLightsNothing) {
