@@ -24,7 +24,34 @@ class Primitive : public Shape {
  public:
   static constexpr int kMaxHits = MaxHits;
 
- private:
+  void local_intersect(const Ray& local_ray, Intersections& xs) const final {
+    HitSlots slots;
+    append(slots.at, self().find_hits(local_ray, slots.at), xs);
+  }
+  bool local_intersect_nearest(const Ray& local_ray, double t_max, Intersection& hit) const override {
+    HitSlots slots;
+    return nearest_in(slots.at, self().find_hits(local_ray, slots.at), t_max, hit);
+  }
+  bool local_blocks(const Ray& local_ray, double t_max) const override {
+    HitSlots slots;
+    return any_in(slots.at, self().find_hits(local_ray, slots.at), t_max);
+  }
+
+  // The parent-space queries: the ray into object space, then Derived's
+  // local query called directly (one virtual call per query, not two).
+  // Derived may override these again (a sphere under a similarity
+  // transform answers in its parent's space).
+  void intersect(const Ray& ray, Intersections& xs) const override {
+    self().Derived::local_intersect(to_object_space(ray), xs);
+  }
+  bool intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const override {
+    return self().Derived::local_intersect_nearest(to_object_space(ray), t_max, hit);
+  }
+  bool blocks(const Ray& ray, double t_max) const override {
+    return casts_shadow && self().Derived::local_blocks(to_object_space(ray), t_max);
+  }
+
+ protected:
   // Room for find_hits's answers without constructing them (Intersection's
   // members have initialisers, which an array would run on every call).
   union HitSlots {
@@ -32,20 +59,14 @@ class Primitive : public Shape {
     Intersection at[kMaxHits];
   };
 
- public:
-  void local_intersect(const Ray& local_ray, Intersections& xs) const final {
-    HitSlots slots;
-    Intersection* const hits = slots.at;
-    const int n = self().find_hits(local_ray, hits);
-    // One push_back per hit: a range insert's general path costs more than
-    // the sphere's own arithmetic.
+  // What each query makes of the first n hits: all of them appended (one
+  // push_back per hit: a range insert's general path costs more than the
+  // sphere's own arithmetic), the nearest with 0 <= t < t_max, or whether
+  // there is one.
+  static void append(const Intersection* hits, int n, Intersections& xs) {
     for (int i = 0; i < n; ++i) xs.push_back(hits[i]);
   }
-
-  bool local_intersect_nearest(const Ray& local_ray, double t_max, Intersection& hit) const override {
-    HitSlots slots;
-    Intersection* const hits = slots.at;
-    const int n = self().find_hits(local_ray, hits);
+  static bool nearest_in(const Intersection* hits, int n, double t_max, Intersection& hit) {
     bool found = false;
     for (int i = 0; i < n; ++i)
       if (hits[i].t >= 0 && hits[i].t < t_max) {
@@ -55,11 +76,7 @@ class Primitive : public Shape {
       }
     return found;
   }
-
-  bool local_blocks(const Ray& local_ray, double t_max) const override {
-    HitSlots slots;
-    Intersection* const hits = slots.at;
-    const int n = self().find_hits(local_ray, hits);
+  static bool any_in(const Intersection* hits, int n, double t_max) {
     for (int i = 0; i < n; ++i)
       if (hits[i].t >= 0 && hits[i].t < t_max) return true;
     return false;

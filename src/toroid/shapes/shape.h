@@ -56,19 +56,25 @@ class Shape {
   // Shapes with casts_shadow == false are skipped by shadow rays (YAML `shadow: false`).
   bool casts_shadow = true;
 
-  // Appends the intersections of a ray given in the parent's space.
-  void intersect(const Ray& ray, Intersections& xs) const { local_intersect(to_object_space(ray), xs); }
+  // The queries take a ray in the parent's space. By default they move it
+  // into object space and ask the local_ queries below; a shape that can
+  // answer in its parent's space (a sphere under a similarity transform)
+  // overrides them. Primitive overrides all three, so that a primitive
+  // costs one virtual call per query.
 
-  // The renderer's queries, for a ray in the parent's space. The nearest
-  // intersection with 0 <= t < t_max: when there is one, sets `hit` and
-  // returns true (the same one that hit() picks from intersect's list, up to
-  // ties).
-  bool intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const {
+  // Appends the intersections of the ray.
+  virtual void intersect(const Ray& ray, Intersections& xs) const { local_intersect(to_object_space(ray), xs); }
+  // The renderer's queries. The nearest intersection with 0 <= t < t_max:
+  // when there is one, sets `hit` and returns true (the same one that hit()
+  // picks from intersect's list, up to ties).
+  virtual bool intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const {
     return local_intersect_nearest(to_object_space(ray), t_max, hit);
   }
   // Whether a shape that casts shadows meets the ray at some 0 <= t < t_max
   // (shadow rays: any blocker will do).
-  bool blocks(const Ray& ray, double t_max) const { return casts_shadow && local_blocks(to_object_space(ray), t_max); }
+  virtual bool blocks(const Ray& ray, double t_max) const {
+    return casts_shadow && local_blocks(to_object_space(ray), t_max);
+  }
 
   // Normal at a world-space point; `hit` carries u/v for smooth triangles.
   // Virtual so that a shape whose normal is the same everywhere (a plane)
@@ -135,7 +141,6 @@ class Shape {
   // Told by set_transform, after the new inverse is in place.
   virtual void transform_changed() {}
 
- private:
   Ray to_object_space(const Ray& ray) const {
     return {inverse_.times_point(ray.origin), inverse_.times_vector(ray.direction)};
   }

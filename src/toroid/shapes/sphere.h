@@ -19,14 +19,41 @@ class Sphere : public Primitive<Sphere> {
   // Inline: the renderer's three queries each inline it, and the sphere's
   // arithmetic is cheaper than a call and the zeroing of an unread array.
   int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
-    // The book's a, b and c, with dot products of xyz alone: the origin less
-    // the centre (0, 0, 0) is the origin, and the w terms are 0 * 0 (b's + 0
-    // is kept: it turns a sum of -0 into +0, and b's sign picks the root).
-    const Tuple& o = ray.origin;
-    const Tuple& d = ray.direction;
+    return hits_about_centre(ray.origin, ray.direction, 1.0, hits);
+  }
+  Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
+
+  // Under a similarity transform (rotations, mirrors, one scale for all
+  // three axes, translations) the sphere is a sphere in its parent's space
+  // too, of centre `centre()` and radius `radius()`: the queries test the
+  // ray there, without moving it into object space, and a sphere at the
+  // top level takes its normal there (the point less the centre), without
+  // the transforms. Other transforms take the book's way.
+  bool intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const override;
+  bool blocks(const Ray& ray, double t_max) const override;
+  void intersect(const Ray& ray, Intersections& xs) const override;
+  Tuple normal_at(const Tuple& world_point, const Intersection& hit = {}) const override;
+  // Under a similarity: the box of that sphere, outwards by far more than
+  // the rounding of its test (groups and CSG cull by it: it must hold every
+  // hit, a grazing one included).
+  BoundingBox parent_space_bounds() const override;
+  bool similarity() const { return similarity_; }
+  const Tuple& centre() const { return centre_; }
+  double radius() const { return radius_; }
+
+ protected:
+  void transform_changed() override;
+
+ private:
+  // The hits of the line origin + t direction with the sphere of squared
+  // radius radius2 about the origin, both t's (ascending).
+  int hits_about_centre(const Tuple& o, const Tuple& d, double radius2, Intersection hits[kMaxHits]) const {
+    // The book's a, b and c, with dot products of xyz alone: the w terms
+    // are 0 * 0 (b's + 0 is kept: it turns a sum of -0 into +0, and b's
+    // sign picks the root).
     const double a = d.x * d.x + d.y * d.y + d.z * d.z;
     const double b = 2 * (d.x * o.x + d.y * o.y + d.z * o.z + 0.0);
-    const double c = o.x * o.x + o.y * o.y + o.z * o.z - 1;
+    const double c = o.x * o.x + o.y * o.y + o.z * o.z - radius2;
     const double discriminant = b * b - 4 * a * c;
     if (discriminant < 0) return 0;
     // Numerically stable form: no cancellation between -b and sqrt(disc).
@@ -38,7 +65,15 @@ class Sphere : public Primitive<Sphere> {
     hits[1] = {t1, this};
     return 2;
   }
-  Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
+  // The hits of a parent-space ray, under a similarity transform.
+  int hits_in_parent_space(const Ray& ray, Intersection hits[kMaxHits]) const {
+    const Tuple o = ray.origin - centre_;
+    return hits_about_centre(o, ray.direction, radius2_, hits);
+  }
+
+  Tuple centre_ = point(0, 0, 0);
+  double radius_ = 1, radius2_ = 1, inverse_radius_ = 1;
+  bool similarity_ = true;
 };
 
 // A unit sphere of glass: transparency 1, refractive index 1.5 (RTC chapter 11).

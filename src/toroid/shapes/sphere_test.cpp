@@ -9,7 +9,9 @@
 
 #include "support/approx.h"
 #include "support/material_eq.h"
+#include "toroid/math/hash.h"
 #include "toroid/math/transform.h"
+#include "toroid/shapes/group.h"
 
 namespace toroid {
 namespace {
@@ -162,6 +164,103 @@ TEST(Spheres, AHelperForProducingASphereWithAGlassyMaterial) {
   EXPECT_APPROX(s->transform(), Matrix4::identity());
   EXPECT_EQ(s->material().transparency, 1.0);
   EXPECT_EQ(s->material().refractive_index, 1.5);
+}
+
+// A sphere under a similarity transform answers in its parent's space:
+// the same surface as the book's way (the ray into object space, the unit
+// sphere), up to rounding.
+
+// The book's answers: the ray moved into object space by hand.
+Intersections book_intersect(const Sphere& s, const Ray& r) {
+  Intersections xs;
+  s.local_intersect(transform(r, s.inverse_transform()), xs);
+  return xs;
+}
+
+// A ray from a point around the sphere towards a point near it.
+Ray random_ray(std::uint64_t& key, const Tuple& centre, double spread) {
+  const auto coordinate = [&](double scale) { return (2 * unit_interval(key = splitmix64(key)) - 1) * scale; };
+  const Tuple from = centre + vector(coordinate(3 * spread), coordinate(3 * spread), coordinate(3 * spread));
+  const Tuple to = centre + vector(coordinate(spread), coordinate(spread), coordinate(spread));
+  return {from, to - from};
+}
+
+TEST(SpheresUnderSimilarity, MeetRaysWhereTheBooksWayDoes) {
+  Sphere s;
+  s.set_transform(translation(3, -2, 7) * rotation_y(0.7) * rotation_x(-1.3) * scaling(2.5, 2.5, 2.5));
+  ASSERT_TRUE(s.similarity());
+  EXPECT_APPROX(s.centre(), point(3, -2, 7));
+  EXPECT_APPROX(s.radius(), 2.5);
+  std::uint64_t key = 12345;
+  int hits = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Ray r = random_ray(key, point(3, -2, 7), 2.5);
+    const Intersections book = book_intersect(s, r);
+    Intersections xs;
+    s.intersect(r, xs);
+    ASSERT_EQ(xs.size(), book.size()) << i;
+    for (std::size_t k = 0; k < xs.size(); ++k) {
+      EXPECT_NEAR(xs[k].t, book[k].t, 1e-12 * (1 + std::abs(book[k].t))) << i;
+      EXPECT_EQ(xs[k].object, &s);
+    }
+    if (xs.empty()) continue;
+    ++hits;
+    // The nearest hit from t = 0 and the shadow test agree with the list.
+    const Intersection* first = hit(xs);
+    Intersection nearest;
+    const bool found = s.intersect_nearest(r, 1e300, nearest);
+    ASSERT_EQ(found, first != nullptr) << i;
+    if (found) EXPECT_EQ(nearest.t, first->t) << i;
+    EXPECT_EQ(s.blocks(r, 1e300), found) << i;
+    // The normal at the hit: the book's, to rounding, and of unit length.
+    const Tuple p = r.position(xs[0].t);
+    const Tuple n = s.normal_at(p);
+    const Tuple book_n = s.normal_to_world(s.local_normal_at(s.world_to_object(p), xs[0]));
+    EXPECT_NEAR(n.x, book_n.x, 1e-9) << i;
+    EXPECT_NEAR(n.y, book_n.y, 1e-9) << i;
+    EXPECT_NEAR(n.z, book_n.z, 1e-9) << i;
+    EXPECT_NEAR(magnitude(n), 1.0, 1e-9) << i;
+    EXPECT_EQ(n.w, 0.0);
+  }
+  EXPECT_GT(hits, 500);  // the rays do meet the sphere
+}
+
+TEST(SpheresUnderSimilarity, AMirrorKeepsTheNormalOutwards) {
+  Sphere s;
+  s.set_transform(translation(1, 2, 3) * scaling(-2, -2, -2));
+  ASSERT_TRUE(s.similarity());
+  EXPECT_APPROX(s.centre(), point(1, 2, 3));
+  EXPECT_APPROX(s.radius(), 2.0);
+  EXPECT_APPROX(s.normal_at(point(3, 2, 3)), vector(1, 0, 0));
+}
+
+TEST(SpheresUnderSimilarity, OtherTransformsTakeTheBooksWayBitForBit) {
+  Sphere s;
+  s.set_transform(translation(1, 0, 0) * scaling(2, 1, 1.5));
+  EXPECT_FALSE(s.similarity());
+  std::uint64_t key = 777;
+  for (int i = 0; i < 500; ++i) {
+    const Ray r = random_ray(key, point(1, 0, 0), 2);
+    const Intersections book = book_intersect(s, r);
+    Intersections xs;
+    s.intersect(r, xs);
+    ASSERT_EQ(xs.size(), book.size());
+    for (std::size_t k = 0; k < xs.size(); ++k) EXPECT_EQ(xs[k].t, book[k].t);
+  }
+}
+
+TEST(SpheresUnderSimilarity, InAGroupTheNormalGoesThroughTheGroup) {
+  auto g = std::make_shared<Group>();
+  g->set_transform(scaling(1, 2, 1));
+  auto s = std::make_shared<Sphere>();
+  s->set_transform(translation(5, 0, 0));
+  g->add_child(s);
+  ASSERT_TRUE(s->similarity());
+  // The group's squash tilts the normal: the world point (5 + a, 2a, 0),
+  // a = sqrt(1/2), is (5 + a, a, 0) in the group, whose normal (a, a, 0)
+  // goes to the world as (a, a / 2, 0), normalised.
+  const Tuple q = point(5 + std::sqrt(0.5), 2 * std::sqrt(0.5), 0);
+  EXPECT_APPROX(s->normal_at(q), normalize(vector(std::sqrt(0.5), std::sqrt(0.5) / 2, 0)));
 }
 
 }  // namespace
