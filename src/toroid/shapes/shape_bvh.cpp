@@ -347,9 +347,14 @@ std::uintptr_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std:
 // first, and calls stop(shape) for the shapes in their leaves, until it
 // returns true (then so does walk). `t_max` is read again at every step:
 // the caller's callback shortens it as hits come closer, and boxes waiting
-// on the stack beyond it are skipped.
+// on the stack beyond it are skipped. With `any_order`, an index of two
+// shapes calls stop for both, in the order they were indexed, once the ray
+// enters their common box: the box of each costs about as much as a test
+// of a sphere or a plane, and the common box turns away the rays that miss
+// both (the queries whose answer does not depend on which shapes are asked
+// first, beyond ties: the nearest hit and the shadow test).
 template <typename Stop>
-bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const {
+bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, bool any_order, Stop&& stop) const {
   // The root's own box first, even though its children's lie inside it:
   // most rays that miss everything miss it, and one box costs less than
   // two.
@@ -357,6 +362,10 @@ bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, Stop&& st
   const SlabRay r(ray, t_min);
   double entry;
   if (!enters(root_, 0, r, t_max, entry)) return false;
+  if (any_order && nodes_.size() == 1) {
+    const Node& n = nodes_[0];  // two leaves: one interior node per shape but one
+    return stop(reinterpret_cast<const Shape*>(n.link[0])) || stop(reinterpret_cast<const Shape*>(n.link[1]));
+  }
   struct Pending {
     std::uintptr_t link;
     double entry;
@@ -414,7 +423,7 @@ bool ShapeBvh::intersect_nearest(const Ray& ray, double t_max, Intersection& hit
     return false;
   });
   for (const Shape* s : unbounded_) try_shape(s);
-  walk(ray, 0, t_max, try_shape);
+  walk(ray, 0, t_max, true, try_shape);
   return found;
 }
 
@@ -432,7 +441,7 @@ bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const
   if (plane_blocks) return true;
   for (const Shape* s : unbounded_)
     if (blocked_by(s)) return true;
-  return walk(ray, 0, t_max, blocked_by);
+  return walk(ray, 0, t_max, true, blocked_by);
 }
 
 const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
@@ -458,7 +467,7 @@ const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections&
     return false;
   });
   for (const Shape* s : unbounded_) add_shape(s);
-  walk(ray, 0, t_hit, add_shape);
+  walk(ray, 0, t_hit, false, add_shape);
   return found == kNone ? nullptr : &xs[found];
 }
 

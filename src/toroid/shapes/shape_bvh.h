@@ -89,7 +89,7 @@ class ShapeBvh {
   std::uintptr_t build(std::vector<Item>& items, std::size_t begin, std::size_t end, int depth, std::size_t parent,
                        int child);
   template <typename Stop>
-  bool walk(const Ray& ray, double t_min, const double& t_max, Stop&& stop) const;
+  bool walk(const Ray& ray, double t_min, const double& t_max, bool any_order, Stop&& stop) const;
 
   // Unbounded planes, two at a time, by the one row of each one's inverse
   // transform that gives a point's object-space height (copied here: every

@@ -82,6 +82,53 @@ TEST(ShapeBvh, AxisParallelRaysAlongBoxFacesFindWhatEveryShapeGives) {
   EXPECT_GT(hits, 20);
 }
 
+// An index of two shapes asks both once the ray enters their common box
+// (not each one's box): the nearest hit and the shadow test are still every
+// shape's, for two shapes apart, overlapping, and one inside the other.
+TEST(ShapeBvh, AnIndexOfTwoShapesFindsWhatEveryShapeGives) {
+  const auto sphere_at = [](double x, double y, double z, double radius) {
+    auto s = std::make_shared<Sphere>();
+    s->set_transform(translation(x, y, z) * scaling(radius, radius, radius));
+    return s;
+  };
+  auto torus = std::make_shared<Torus>(1.0, 0.3);
+  torus->set_transform(translation(2, 1, -1) * rotation_x(0.8));
+  const std::vector<std::vector<std::shared_ptr<Shape>>> worlds = {
+      {sphere_at(-6, 0, 0, 3), sphere_at(6, 2, 1, 4)},   // apart
+      {sphere_at(0, 0, 0, 5), sphere_at(0, 0, 0, 2.5)},  // one inside the other (air in glass)
+      {sphere_at(1, 0, 0, 4), torus}};                   // overlapping
+  for (const auto& shapes : worlds) {
+    const ShapeBvh bvh(shapes);
+    int hits = 0, blocked = 0;
+    for (const Ray& ray : random_rays(3000)) {
+      Intersection expected, got;
+      const bool found = nearest_of_every_shape(shapes, ray, expected);
+      ASSERT_EQ(bvh.intersect_nearest(ray, kInf, got), found);
+      if (found) {
+        ++hits;
+        EXPECT_EQ(got.t, expected.t);
+        EXPECT_EQ(got.object, expected.object);
+      }
+      for (double t_max : {2.0, 8.0, kInf}) {
+        const bool blocks = shapes[0]->blocks(ray, t_max) || shapes[1]->blocks(ray, t_max);
+        ASSERT_EQ(bvh.blocks(ray, t_max), blocks);
+        blocked += blocks;
+      }
+    }
+    EXPECT_GT(hits, 100);  // the rays do meet the shapes
+    EXPECT_GT(blocked, 100);
+  }
+  // The list up to the hit still leaves out a shape wholly behind the
+  // origin (its box, which the list query tests).
+  const auto& apart = worlds[0];
+  const ShapeBvh bvh(apart);
+  Intersections xs;
+  const Intersection* h = bvh.intersect_up_to_hit({point(0, 0, 0), vector(1, 0.2, 0.1)}, xs);
+  ASSERT_NE(h, nullptr);
+  EXPECT_EQ(h->object, apart[1].get());
+  EXPECT_TRUE(std::none_of(xs.begin(), xs.end(), [&](const Intersection& x) { return x.object == apart[0].get(); }));
+}
+
 TEST(ShapeBvh, BlocksWhenSomeShadowCasterLiesBeforeTMax) {
   const auto shapes = scattered_shapes();
   const ShapeBvh bvh(shapes);
