@@ -37,15 +37,6 @@ double Shape::half_thickness() const {
   return std::isfinite(half) ? half : 0.0;
 }
 
-double Shape::parent_space_half_thickness() const {
-  const double half = half_thickness();
-  if (half == 0) return 0;
-  double norm2 = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) norm2 += inverse_.m[i][j] * inverse_.m[i][j];
-  return half / std::sqrt(norm2);
-}
-
 namespace {
 // local_intersect's list for the default queries. One per thread; the
 // defaults never re-enter each other while it is in use (local_intersect

@@ -103,13 +103,6 @@ class Shape {
   // none, as for a plane): the scale of the shape, for the surface bias.
   // Shapes that know it without building their box override it.
   virtual double half_thickness() const;
-  // half_thickness() in the parent's space, a lower bound: divided by the
-  // Frobenius norm of the inverse transform's linear part, which is at least
-  // the largest stretch of the parent-to-object map (exact for a rotation
-  // times a uniform scale, up to the factor sqrt(3)). 0 when
-  // half_thickness() is. The renderer asks it at every hit (the surface
-  // bias); shapes whose half_thickness() never changes may keep it.
-  virtual double parent_space_half_thickness() const;
 
   // Whether the shape's surface bounds a solid: every line crosses it an even
   // number of times, so that whether a point lies inside is the parity of

@@ -15,7 +15,6 @@ void Sphere::transform_changed() {
   // within a few roundings (a rotation by a rounded angle is orthogonal to
   // within a few eps): then the unit sphere maps onto the sphere of that
   // radius about the image of its centre.
-  parent_space_half_thickness_ = Shape::parent_space_half_thickness();
   const Affine& inv = inverse_affine();
   double gram[3][3];
   for (int i = 0; i < 3; ++i)

@@ -210,9 +210,7 @@ TEST(SpheresUnderSimilarity, MeetRaysWhereTheBooksWayDoes) {
     Intersection nearest;
     const bool found = s.intersect_nearest(r, 1e300, nearest);
     ASSERT_EQ(found, first != nullptr) << i;
-    if (found) {
-      EXPECT_EQ(nearest.t, first->t) << i;
-    }
+    if (found) EXPECT_EQ(nearest.t, first->t) << i;
     EXPECT_EQ(s.blocks(r, 1e300), found) << i;
     // The normal at the hit: the book's, to rounding, and of unit length.
     const Tuple p = r.position(xs[0].t);
@@ -263,19 +261,6 @@ TEST(SpheresUnderSimilarity, InAGroupTheNormalGoesThroughTheGroup) {
   // goes to the world as (a, a / 2, 0), normalised.
   const Tuple q = point(5 + std::sqrt(0.5), 2 * std::sqrt(0.5), 0);
   EXPECT_APPROX(s->normal_at(q), normalize(vector(std::sqrt(0.5), std::sqrt(0.5) / 2, 0)));
-}
-
-// The surface bias reads a sphere's half thickness in its parent's space at
-// every hit: the sphere keeps it from set_transform, the same bits as
-// computed from its transform.
-TEST(Spheres, KeepTheirHalfThicknessInTheParentsSpace) {
-  Sphere s;
-  EXPECT_EQ(s.parent_space_half_thickness(), s.Shape::parent_space_half_thickness());
-  for (const Matrix4& m : {scaling(2, 3, 4), translation(1, 2, 3) * rotation_z(0.3) * scaling(0.5, 0.5, 0.5)}) {
-    s.set_transform(m);
-    EXPECT_EQ(s.parent_space_half_thickness(), s.Shape::parent_space_half_thickness());
-  }
-  EXPECT_NEAR(s.parent_space_half_thickness(), 0.5 / std::sqrt(3.0), 1e-15);
 }
 
 }  // namespace
