@@ -141,7 +141,7 @@ class Shape {
   // Told by set_transform, after the new inverse is in place.
   virtual void transform_changed() {}
 
-  Ray to_object_space(const Ray& ray) const {
+  [[gnu::always_inline]] Ray to_object_space(const Ray& ray) const {
     return {inverse_.times_point(ray.origin), inverse_.times_vector(ray.direction)};
   }
 };

@@ -174,6 +174,7 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shape
   nodes_.reserve(items.size() - 1);
   root_.link[0] = build(items, 0, items.size(), 0, kRoot, 0);
   has_root_ = true;
+  two_shapes_ = items.size() == 2;  // one interior node, whose children are the two leaves
   nodes_.shrink_to_fit();
 }
 
@@ -362,8 +363,8 @@ bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, bool any_
   const SlabRay r(ray, t_min);
   double entry;
   if (!enters(root_, 0, r, t_max, entry)) return false;
-  if (any_order && nodes_.size() == 1) {
-    const Node& n = nodes_[0];  // two leaves: one interior node per shape but one
+  if (any_order && two_shapes_) {
+    const Node& n = nodes_[0];
     return stop(reinterpret_cast<const Shape*>(n.link[0])) || stop(reinterpret_cast<const Shape*>(n.link[1]));
   }
   struct Pending {

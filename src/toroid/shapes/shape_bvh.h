@@ -110,6 +110,7 @@ class ShapeBvh {
   // unused); has_root_ is false when nothing bounded is indexed.
   Node root_{};
   bool has_root_ = false;
+  bool two_shapes_ = false;              // two bounded shapes: see walk
   std::vector<PlanePair> planes_;        // unbounded planes, tested by every query
   const Plane* odd_plane_ = nullptr;     // the last of an odd number of them
   std::vector<const Shape*> unbounded_;  // other unbounded shapes, likewise

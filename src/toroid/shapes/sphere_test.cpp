@@ -210,7 +210,9 @@ TEST(SpheresUnderSimilarity, MeetRaysWhereTheBooksWayDoes) {
     Intersection nearest;
     const bool found = s.intersect_nearest(r, 1e300, nearest);
     ASSERT_EQ(found, first != nullptr) << i;
-    if (found) EXPECT_EQ(nearest.t, first->t) << i;
+    if (found) {
+      EXPECT_EQ(nearest.t, first->t) << i;
+    }
     EXPECT_EQ(s.blocks(r, 1e300), found) << i;
     // The normal at the hit: the book's, to rounding, and of unit length.
     const Tuple p = r.position(xs[0].t);
