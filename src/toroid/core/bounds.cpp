@@ -2,6 +2,7 @@
 #include "toroid/core/bounds.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace toroid {
 
@@ -39,6 +40,16 @@ std::pair<BoundingBox, BoundingBox> BoundingBox::split() const {
     z0 = z1 = z0 + dz / 2;
   }
   return {BoundingBox{min, point(x1, y1, z1)}, BoundingBox{point(x0, y0, z0), max}};
+}
+
+BoundingBox padded_box(const double centre[3], const double half[3]) {
+  double lo[3], hi[3];
+  for (int i = 0; i < 3; ++i) {
+    const double pad = 1e-9 * (std::abs(centre[i]) + half[i]);
+    lo[i] = centre[i] - half[i] - pad;
+    hi[i] = centre[i] + half[i] + pad;
+  }
+  return {point(lo[0], lo[1], lo[2]), point(hi[0], hi[1], hi[2])};
 }
 
 BoundingBox transform(const BoundingBox& b, const Matrix4& m) {

@@ -44,6 +44,12 @@ struct BoundingBox {
 // transforming the corners but never forms 0 * infinity; an empty box stays empty.
 BoundingBox transform(const BoundingBox& b, const Matrix4& m);
 
+// The box centre[i] +- half[i] on each axis, outwards by 1e-9 (|centre[i]| +
+// half[i]): far more than the rounding of the box and of a shape's own test,
+// for a shape whose box must hold every hit it reports, a grazing one
+// included (groups and CSG cull by the box).
+BoundingBox padded_box(const double centre[3], const double half[3]);
+
 namespace detail {
 // One slab of the ray/box test. `inv` is 1 / direction (+-inf for a zero
 // component). A NaN bound (0 * inf: the origin lies on a slab plane of a

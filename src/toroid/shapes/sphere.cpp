@@ -60,13 +60,8 @@ Tuple Sphere::normal_at(const Tuple& world_point, const Intersection& hit) const
 BoundingBox Sphere::parent_space_bounds() const {
   if (!similarity_) return Shape::parent_space_bounds();
   const double centre[3] = {centre_.x, centre_.y, centre_.z};
-  double lo[3], hi[3];
-  for (int i = 0; i < 3; ++i) {
-    const double reach = radius_ + 1e-9 * (std::abs(centre[i]) + radius_);
-    lo[i] = centre[i] - reach;
-    hi[i] = centre[i] + reach;
-  }
-  return {point(lo[0], lo[1], lo[2]), point(hi[0], hi[1], hi[2])};
+  const double half[3] = {radius_, radius_, radius_};
+  return padded_box(centre, half);
 }
 
 std::shared_ptr<Sphere> glass_sphere() {

@@ -33,9 +33,7 @@ class Sphere : public Primitive<Sphere> {
   bool blocks(const Ray& ray, double t_max) const override;
   void intersect(const Ray& ray, Intersections& xs) const override;
   Tuple normal_at(const Tuple& world_point, const Intersection& hit = {}) const override;
-  // Under a similarity: the box of that sphere, outwards by far more than
-  // the rounding of its test (groups and CSG cull by it: it must hold every
-  // hit, a grazing one included).
+  // Under a similarity: that sphere's box, padded (padded_box).
   BoundingBox parent_space_bounds() const override;
   bool similarity() const { return similarity_; }
   const Tuple& centre() const { return centre_; }

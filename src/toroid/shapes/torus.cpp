@@ -146,17 +146,14 @@ BoundingBox Torus::parent_space_bounds() const {
   // a parent axis whose row of the forward transform is (a, b, c, d), the
   // circle reaches d +- R |(a, b)| and the ball adds r |(a, b, c)|.
   const Matrix4 m = transform();
-  double lo[3], hi[3];
+  double centre[3], half[3];
   for (int i = 0; i < 3; ++i) {
-    const double a = m.m[i][0], b = m.m[i][1], c = m.m[i][2], d = m.m[i][3];
-    const double half = major_ * std::hypot(a, b) + minor_ * std::sqrt(a * a + b * b + c * c);
-    // Outwards by far more than the rounding above, and than a grazing
-    // root's error: the box must hold every hit the solver reports.
-    const double pad = 1e-9 * (std::abs(d) + half);
-    lo[i] = d - half - pad;
-    hi[i] = d + half + pad;
+    const double a = m.m[i][0], b = m.m[i][1], c = m.m[i][2];
+    centre[i] = m.m[i][3];
+    half[i] = major_ * std::hypot(a, b) + minor_ * std::sqrt(a * a + b * b + c * c);
   }
-  return {point(lo[0], lo[1], lo[2]), point(hi[0], hi[1], hi[2])};
+  // Padded: the box must hold every hit the solver reports, a grazing one included.
+  return padded_box(centre, half);
 }
 
 double Torus::half_thickness() const { return partial_ ? Shape::half_thickness() : minor_; }
