@@ -76,12 +76,9 @@ void check_blocks_agrees_with_nearest(double R, double r, const double o[3], con
 // A caller that walks the roots one at a time asks for the nearest root
 // after the one it has: from exactly each root of the list, the nearest-root
 // query gives the list's next root, bit for bit, or none after the last.
-// Ring tori only: on spindle and horn tori the merge of the two factors'
-// roots has a known fault (DEVELOPERS.md, "Glass tori").
 void check_nearest_from_each_root(double R, double r, const double o[3], const double d[3], const double t[4],
                                   int count) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  if (!(r < R)) return;
   for (int i = 0; i < count; ++i) {
     const double* next = std::find_if(t, t + count, [&](double ti) { return ti > t[i]; });
     double nearest = 0;

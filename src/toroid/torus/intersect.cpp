@@ -182,7 +182,7 @@ class RootCollector {
   // root, the piece's middle: its start can round onto the window's start
   // once the shift is added back).
   TOROID_HD void piece(const Sample& a, const Sample& b, double sigma, bool last, bool locate = true) {
-    if (a.s == b.s) {  // a single point: the horn torus's centre
+    if (a.s == b.s) {  // a chord of one point
       if (a.h == 0) push(a.s);
       return;
     }
@@ -617,9 +617,23 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
   // With the lemon's roots to merge, the outer sheet's are all needed.
   int n_out = factor_roots(outer, ray.o, d, R + r, window, r < R ? search : Search::All, s_out);
   int n_in = 0;
-  if (r >= R) {  // the spindle's lemon (a point for the horn torus)
+  if (r >= R) {
     const TorusFactor inner(ray.o, d, R, r, +1.0);
-    n_in = factor_roots(inner, ray.o, d, std::sqrt((r - R) * (r + R)), window, Search::All, s_in);
+    if (r > R) {  // the spindle's lemon
+      n_in = factor_roots(inner, ray.o, d, std::sqrt((r - R) * (r + R)), window, Search::All, s_in);
+    } else {
+      // The horn torus's lemon is its centre alone, where h_in reads 0 only
+      // within rounding of it: searched as a chord, every sample on it would
+      // read 0. The quartic's root there is double (fourfold along the axis),
+      // listed twice: the outer sheet lists it once (at the kink where the
+      // ray crosses the axis) or twice (the two ends of a concave stretch
+      // narrower than rounding, or a tangent along the axis), so an odd
+      // count gets one more.
+      int at_centre = 0;
+      for (int i = 0; i < n_out; ++i)
+        if (inner.sample(s_out[i]).h == 0) s_in[0] = s_out[i], ++at_centre;
+      n_in = at_centre % 2;
+    }
   }
   // Merge the two ascending lists.
   int n = 0, i = 0, j = 0;
@@ -721,10 +735,15 @@ namespace {
 // The first root in (t_min, t_max), to the search's precision.
 TOROID_HD bool first_root_in(double major, double minor, const double origin[3], const double direction[3],
                              double t_min, double t_max, double* t, TorusSolver solver, Search search) {
+  // On a spindle or horn torus the list merges the two factors' roots and
+  // keeps four: near a tangent, rounding can give the factors more than four
+  // between them, and which four a window's search would keep depends on
+  // the window. There the queries read the whole list, so that they give
+  // its roots.
+  const bool from_list = solver != TorusSolver::Default || !(minor < major);
   double roots[4];
-  const int n = solver == TorusSolver::Default
-                    ? solve_default(major, minor, origin, direction, t_min, t_max, search, roots)
-                    : intersect_torus(major, minor, origin, direction, roots, solver);
+  const int n = from_list ? intersect_torus(major, minor, origin, direction, roots, solver)
+                          : solve_default(major, minor, origin, direction, t_min, t_max, search, roots);
   for (int i = 0; i < n; ++i)
     if (roots[i] > t_min && roots[i] < t_max) {
       *t = roots[i];

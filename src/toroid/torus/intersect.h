@@ -31,9 +31,10 @@ inline constexpr double kTorusFattestSpindle = 2;
 
 // Every real root t of |o + t d| on the torus (negative ones too), ascending,
 // with multiplicity where the quartic has a multiple root: a tangent point is
-// listed twice. The one exception is a fourfold root, where the ray lies in
-// the plane of the tube's top or bottom circle and touches that circle (the
-// quartic is then (t - t0)^4): that point is listed twice, not four times.
+// listed twice, and so is a horn torus's centre. The exceptions are the
+// fourfold roots, listed twice, not four times: where the ray lies in the
+// plane of the tube's top or bottom circle and touches that circle (the
+// quartic is then (t - t0)^4), and a horn torus's centre seen along its axis.
 // `direction` need not be of unit length. Returns the count (0..4) written
 // to t.
 TOROID_HD int intersect_torus(double major, double minor, const double origin[3], const double direction[3],

@@ -389,6 +389,94 @@ TEST(TorusIntersect, HornTorusCentreIsADoubleRoot) {
   EXPECT_DOUBLE_EQ(x.t[3], 7);
 }
 
+// The horn's centre is where both factors vanish; the lemon, a point, has no
+// chord to search, so its root is the outer sheet's root at the centre.
+// Along the axis the root is fourfold, listed twice (as a ring torus's top
+// circle touched in its plane).
+TEST(TorusIntersect, HornTorusCentreAlongTheAxisIsListedTwice) {
+  const Roots x = roots(1, 1, {0, 0, -3}, {0, 0, 1});
+  ASSERT_EQ(x.n, 2);
+  EXPECT_EQ(x.t[0], 3);
+  EXPECT_EQ(x.t[1], 3);
+}
+
+TEST(TorusIntersect, ARayMissingTheHornCentreMeetsTheOuterSheetOnly) {
+  const Roots x = roots(1, 1, {-3, 1e-17, 0}, {1, 0, 0});
+  ASSERT_EQ(x.n, 2);
+  EXPECT_DOUBLE_EQ(x.t[0], 1);
+  EXPECT_DOUBLE_EQ(x.t[1], 5);
+}
+
+// Found by the fuzzer: a horn torus of subnormal-scale size, a ray that
+// passes its centre within underflow, and a tiny direction. The lemon's
+// chord, a few roundings wide, once read h_in = 0 at every sample: the
+// centre came out three times and the far root was dropped, so the
+// nearest root after the centre was none.
+TEST(TorusIntersect, ASubnormalHornTorusKeepsItsFarRoot) {
+  const double R = 2.7226523566839745e-40;
+  const double o[3] = {-2.7223672762590401e-40, 8.692515570224397e-311, 2.1564478451596123e-315};
+  const double d[3] = {8.3385946601779345e-309, 0, -0.0};
+  double t[4];
+  ASSERT_EQ(intersect_torus(R, R, o, d, t), 4);
+  EXPECT_LT(t[0], 0);
+  EXPECT_GT(t[1], 0);
+  EXPECT_EQ(t[1], t[2]);  // the centre, twice
+  // (2R - o_x) / d_x, the far side of the outer sheet.
+  EXPECT_NEAR(t[3], (2 * R - o[0]) / d[0], 1e-12 * t[3]);
+  double next = 0;
+  ASSERT_TRUE(intersect_torus_nearest(R, R, o, d, t[1], std::numeric_limits<double>::infinity(), &next));
+  EXPECT_EQ(next, t[3]);
+  const Roots scaled = roots(1e-40, 1e-40, {-3e-40, 1e-300, 0}, {1e-300, 0, 0});
+  ASSERT_EQ(scaled.n, 4);
+  EXPECT_EQ(scaled.t[1], scaled.t[2]);
+  EXPECT_NEAR(scaled.t[3], 5e260, 1e248);
+}
+
+// Found by the fuzzer: a ray that passes a subnormal-scale horn torus's axis
+// 1e-129 of its size from the centre, where the outer sheet's concave
+// stretch has both ends reading h = 0: the outer sheet lists the centre
+// twice itself, and the lemon adds none.
+TEST(TorusIntersect, AHornCentreTheOuterSheetListsTwiceIsNotListedAgain) {
+  const double R = 2.7226523566839745e-40;
+  const double o[3] = {6.6184012546675842e-103, -5.2997391148093205e-169, 6.5358285208114173e-307};
+  const double d[3] = {2.1800754380841751e-106, 8.2889195776527596e-317, -3.5075800006864877e-271};
+  double t[4];
+  ASSERT_EQ(intersect_torus(R, R, o, d, t), 4);
+  EXPECT_EQ(t[1], t[2]);
+  EXPECT_DOUBLE_EQ(t[3], -t[0]);  // the outer sheet at -2R and +2R, the origin within 1e-63 R of the centre
+  double next = 0;
+  ASSERT_TRUE(intersect_torus_nearest(R, R, o, d, t[2], std::numeric_limits<double>::infinity(), &next));
+  EXPECT_EQ(next, t[3]);
+}
+
+// Found by the fuzzer: a spindle torus of R = 3e-315, r = 3e151 (a sphere,
+// to any double) touched at its top by a horizontal ray. Within the
+// tangent's rounding the two factors find six roots between them, and the
+// list keeps the first four; a query that searched only its window kept
+// others. The queries read the list on spindle and horn tori: walking the
+// roots one query at a time gives the list.
+TEST(TorusIntersect, TheQueriesOnASpindleTorusGiveTheListsRoots) {
+  const double R = 3.3985088839678189e-315, r = 2.5673651841076237e+151;
+  const double o[3] = {5.9776128797411001e+141, 7.9054745135201817e-315, 2.5673651841076237e+151};
+  const double d[3] = {1.6233963415903735e+154, 0, 4.7255866272483247e-173};
+  double t[4];
+  const int n = intersect_torus(R, r, o, d, t);
+  ASSERT_GE(n, 1);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double from = -kInf;
+  for (int i = 0; i < n; ++i) {
+    if (i > 0 && t[i] == t[i - 1]) continue;
+    double next = 0;
+    ASSERT_TRUE(intersect_torus_nearest(R, r, o, d, from, kInf, &next)) << i;
+    EXPECT_EQ(next, t[i]) << i;
+    EXPECT_TRUE(torus_blocks(R, r, o, d, from, kInf)) << i;
+    from = t[i];
+  }
+  double next = 0;
+  EXPECT_FALSE(intersect_torus_nearest(R, r, o, d, from, kInf, &next)) << next;
+  EXPECT_FALSE(torus_blocks(R, r, o, d, from, kInf));
+}
+
 TEST(TorusIntersect, SpindleTorusInnerLemonIsIntersected) {
   // r = 1.5: outer surface at |x| = 2.5, lemon at |x| = 0.5.
   const Roots x = roots(1, 1.5, {-5, 0, 0}, {1, 0, 0});
