@@ -37,19 +37,19 @@ void Sphere::transform_changed() {
 bool Sphere::intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const {
   if (!similarity_) return Primitive::intersect_nearest(ray, t_max, hit);
   HitSlots slots;
-  return nearest_in(slots.at, hits_in_parent_space(ray, slots.at), t_max, hit);
+  return nearest_in(slots.at, hits_in_parent_space(ray, slots.at, true), t_max, hit);
 }
 
 bool Sphere::blocks(const Ray& ray, double t_max) const {
   if (!similarity_) return Primitive::blocks(ray, t_max);
   HitSlots slots;
-  return casts_shadow && any_in(slots.at, hits_in_parent_space(ray, slots.at), t_max);
+  return casts_shadow && any_in(slots.at, hits_in_parent_space(ray, slots.at, true), t_max);
 }
 
 void Sphere::intersect(const Ray& ray, Intersections& xs) const {
   if (!similarity_) return Primitive::intersect(ray, xs);
   HitSlots slots;
-  append(slots.at, hits_in_parent_space(ray, slots.at), xs);
+  append(slots.at, hits_in_parent_space(ray, slots.at, false), xs);
 }
 
 Tuple Sphere::normal_at(const Tuple& world_point, const Intersection& hit) const {

@@ -19,7 +19,18 @@ class Sphere : public Primitive<Sphere> {
   // Inline: the renderer's three queries each inline it, and the sphere's
   // arithmetic is cheaper than a call and the zeroing of an unread array.
   int find_hits(const Ray& ray, Intersection hits[kMaxHits]) const {
-    return hits_about_centre(ray.origin, ray.direction, 1.0, hits);
+    return hits_about_centre(ray.origin, ray.direction, 1.0, hits, false);
+  }
+  // The queries that look ahead (t >= 0) skip a sphere the ray leaves from
+  // outside before the square root (hits_about_centre).
+  bool local_intersect_nearest(const Ray& local_ray, double t_max, Intersection& hit) const override {
+    HitSlots slots;
+    return nearest_in(slots.at, hits_about_centre(local_ray.origin, local_ray.direction, 1.0, slots.at, true), t_max,
+                      hit);
+  }
+  bool local_blocks(const Ray& local_ray, double t_max) const override {
+    HitSlots slots;
+    return any_in(slots.at, hits_about_centre(local_ray.origin, local_ray.direction, 1.0, slots.at, true), t_max);
   }
   Tuple local_normal_at(const Tuple& p, const Intersection& hit) const override;
 
@@ -44,14 +55,21 @@ class Sphere : public Primitive<Sphere> {
 
  private:
   // The hits of the line origin + t direction with the sphere of squared
-  // radius radius2 about the origin, both t's (ascending).
-  int hits_about_centre(const Tuple& o, const Tuple& d, double radius2, Intersection hits[kMaxHits]) const {
+  // radius radius2 about the origin, both t's (ascending). With
+  // `ahead_only`, none where the origin is outside (c > 0) and the line
+  // leaves the centre (b > 0): both t's would come out negative (q < 0
+  // below, so q / a < 0 and c / q < 0), and the queries that read only
+  // t >= 0 are spared the square root and the divisions (shadow rays
+  // leaving a sphere, or pointing away from one, are the common case).
+  int hits_about_centre(const Tuple& o, const Tuple& d, double radius2, Intersection hits[kMaxHits],
+                        bool ahead_only) const {
     // The book's a, b and c, with dot products of xyz alone: the w terms
     // are 0 * 0 (b's + 0 is kept: it turns a sum of -0 into +0, and b's
     // sign picks the root).
     const double a = d.x * d.x + d.y * d.y + d.z * d.z;
     const double b = 2 * (d.x * o.x + d.y * o.y + d.z * o.z + 0.0);
     const double c = o.x * o.x + o.y * o.y + o.z * o.z - radius2;
+    if (ahead_only && b > 0 && c > 0) return 0;
     const double discriminant = b * b - 4 * a * c;
     if (discriminant < 0) return 0;
     // Numerically stable form: no cancellation between -b and sqrt(disc).
@@ -64,9 +82,9 @@ class Sphere : public Primitive<Sphere> {
     return 2;
   }
   // The hits of a parent-space ray, under a similarity transform.
-  int hits_in_parent_space(const Ray& ray, Intersection hits[kMaxHits]) const {
+  int hits_in_parent_space(const Ray& ray, Intersection hits[kMaxHits], bool ahead_only) const {
     const Tuple o = ray.origin - centre_;
-    return hits_about_centre(o, ray.direction, radius2_, hits);
+    return hits_about_centre(o, ray.direction, radius2_, hits, ahead_only);
   }
 
   Tuple centre_ = point(0, 0, 0);

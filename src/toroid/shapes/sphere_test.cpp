@@ -227,6 +227,49 @@ TEST(SpheresUnderSimilarity, MeetRaysWhereTheBooksWayDoes) {
   EXPECT_GT(hits, 500);  // the rays do meet the sphere
 }
 
+// The nearest hit and the shadow test skip a sphere the ray leaves from
+// outside before solving: from inside, on and outside the surface, in
+// every direction, both still give what the full list gives, bit for bit.
+TEST(Spheres, TheQueriesThatLookAheadAgreeWithTheListFromEveryOrigin) {
+  Sphere similar, squashed;
+  similar.set_transform(translation(3, -2, 7) * rotation_y(0.7) * scaling(2.5, 2.5, 2.5));
+  squashed.set_transform(translation(1, 0, 0) * scaling(2, 0.1, 1.5));
+  ASSERT_TRUE(similar.similarity());
+  ASSERT_FALSE(squashed.similarity());
+  std::uint64_t key = 4242;
+  const auto coordinate = [&] { return 2 * unit_interval(key = splitmix64(key)) - 1; };
+  int leaving = 0, entering = 0;
+  for (const Sphere* s : {&similar, &squashed}) {
+    for (int i = 0; i < 3000; ++i) {
+      // An object-space origin inside (|p| < 1), near the surface or outside.
+      const double reach = i % 3 == 0 ? 0.9 : i % 3 == 1 ? 1.0 : 2.5;
+      Tuple local = vector(coordinate(), coordinate(), coordinate());
+      local = normalize(local) * (reach * (i % 3 == 1 ? 1 + 1e-9 * coordinate() : std::abs(coordinate())));
+      const Tuple from = s->transform() * point(local.x, local.y, local.z);
+      const Ray r{from, vector(coordinate(), coordinate(), coordinate())};
+      Intersections xs;
+      s->intersect(r, xs);
+      for (const double t_max : {1e300, 0.5, 3.0}) {
+        const Intersection* first = nullptr;
+        for (const Intersection& x : xs)
+          if (x.t >= 0 && x.t < t_max && (first == nullptr || x.t < first->t)) first = &x;
+        Intersection nearest;
+        const bool found = s->intersect_nearest(r, t_max, nearest);
+        ASSERT_EQ(found, first != nullptr) << i << " " << t_max;
+        if (found) {
+          EXPECT_EQ(nearest.t, first->t) << i;
+        }
+        EXPECT_EQ(s->blocks(r, t_max), found) << i << " " << t_max;
+      }
+      const Ray local_ray = transform(r, s->inverse_transform());
+      const double b = dot(local_ray.direction, vector(local_ray.origin.x, local_ray.origin.y, local_ray.origin.z));
+      if (xs.size() == 2) ++(b > 0 ? leaving : entering);
+    }
+  }
+  EXPECT_GT(leaving, 1000);  // lines that meet the sphere but leave its centre
+  EXPECT_GT(entering, 1000);
+}
+
 TEST(SpheresUnderSimilarity, AMirrorKeepsTheNormalOutwards) {
   Sphere s;
   s.set_transform(translation(1, 2, 3) * scaling(-2, -2, -2));
