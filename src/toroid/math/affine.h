@@ -5,6 +5,8 @@
 // same order as Matrix4 * Tuple, so results are bit-identical to it.
 #pragma once
 
+#include <cmath>
+
 #include "toroid/math/matrix.h"
 
 namespace toroid {
@@ -63,5 +65,16 @@ struct Affine {
                   m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z);
   }
 };
+
+// The Frobenius norm of the linear (top-left 3x3) part of an Affine's or a
+// Matrix4's rows: a bound on the largest stretch of the map (exact for a
+// rotation times a uniform scale, up to the factor sqrt(3)).
+template <typename Rows>
+double linear_frobenius_norm(const Rows& m) {
+  double norm2 = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) norm2 += m[i][j] * m[i][j];
+  return std::sqrt(norm2);
+}
 
 }  // namespace toroid

@@ -63,25 +63,17 @@ void refractive_indices(const Intersection& hit, std::span<const Intersection> x
 double max_abs(const Tuple& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
 // Half the thinnest finite, non-zero side of the shape's object-space box, in
-// world units: a lower bound, since a length shrinks at most by the largest
-// stretch of the world-to-object matrix, and that is at most the Frobenius
-// norm of its linear part (exact for a rotation times a uniform scale, up
-// to the factor sqrt(3)). 0 when no side is finite and non-zero (a plane).
+// world units: a lower bound (Shape::parent_space_half_thickness). 0 when no
+// side is finite and non-zero (a plane).
 double world_half_thickness(const Shape& shape) {
+  // Asked at every hit: a shape at the top level answers from its own inverse.
+  if (shape.parent == nullptr) return shape.parent_space_half_thickness();
   const double half = shape.half_thickness();
   if (half == 0) return 0;
-  const auto frobenius = [](const auto& m) {
-    double norm2 = 0;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) norm2 += m[i][j] * m[i][j];
-    return std::sqrt(norm2);
-  };
-  // Asked at every hit: a shape at the top level reads its own inverse.
-  if (shape.parent == nullptr) return half / frobenius(shape.inverse_affine().m);
   Matrix4 world_to_object = shape.inverse_transform();
   for (const Shape* s = shape.parent; s != nullptr; s = s->parent)
     world_to_object = world_to_object * s->inverse_transform();
-  return half / frobenius(world_to_object.m);
+  return half / linear_frobenius_norm(world_to_object.m);
 }
 
 // Everything but n1 and n2 (left at 1). Built from locals in one go: the

@@ -37,6 +37,12 @@ class Primitive : public Shape {
     return any_in(slots.at, self().find_hits(local_ray, slots.at), t_max);
   }
 
+  // Shape's, with Derived's half_thickness called directly.
+  double parent_space_half_thickness() const override {
+    const double half = self().Derived::half_thickness();
+    return half == 0 ? 0 : half / linear_frobenius_norm(inverse_affine().m);
+  }
+
   // The parent-space queries: the ray into object space, then Derived's
   // local query called directly (one virtual call per query, not two).
   // Derived may override these again (a sphere under a similarity

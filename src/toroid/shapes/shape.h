@@ -103,6 +103,11 @@ class Shape {
   // none, as for a plane): the scale of the shape, for the surface bias.
   // Shapes that know it without building their box override it.
   virtual double half_thickness() const;
+  // half_thickness() in the parent's space, a lower bound: divided by the
+  // Frobenius norm of the inverse's linear part (a length shrinks at most by
+  // the largest stretch of the parent-to-object map). Asked at every hit of
+  // a top-level shape (the surface bias); primitives answer with one call.
+  virtual double parent_space_half_thickness() const;
 
   // Whether the shape's surface bounds a solid: every line crosses it an even
   // number of times, so that whether a point lies inside is the parity of

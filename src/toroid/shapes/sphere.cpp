@@ -16,6 +16,7 @@ void Sphere::transform_changed() {
   // within a few eps): then the unit sphere maps onto the sphere of that
   // radius about the image of its centre.
   const Affine& inv = inverse_affine();
+  parent_space_half_ = Primitive::parent_space_half_thickness();
   double gram[3][3];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)

@@ -15,6 +15,8 @@ class Sphere : public Primitive<Sphere> {
   BoundingBox bounds() const override { return {point(-1, -1, -1), point(1, 1, 1)}; }
   // Half of bounds()'s side, without building the box: asked at every hit.
   double half_thickness() const override { return 1.0; }
+  // Kept from set_transform: asked at every hit.
+  double parent_space_half_thickness() const override { return parent_space_half_; }
   bool closed_surface() const override { return true; }
   // Inline: the renderer's three queries each inline it, and the sphere's
   // arithmetic is cheaper than a call and the zeroing of an unread array.
@@ -89,6 +91,7 @@ class Sphere : public Primitive<Sphere> {
 
   Tuple centre_ = point(0, 0, 0);
   double radius_ = 1, radius2_ = 1, inverse_radius_ = 1;
+  double parent_space_half_ = 1 / std::sqrt(3.0);  // Shape's expression, for the identity
   bool similarity_ = true;
 };
 

@@ -270,6 +270,21 @@ TEST(Spheres, TheQueriesThatLookAheadAgreeWithTheListFromEveryOrigin) {
   EXPECT_GT(entering, 1000);
 }
 
+// The sphere keeps its half thickness in its parent's space (asked at every
+// hit, for the surface bias): the bits Shape's expression gives, for every
+// transform it is given.
+TEST(Spheres, KeepTheirParentSpaceHalfThicknessAsShapeComputesIt) {
+  Sphere s;
+  EXPECT_EQ(s.parent_space_half_thickness(), s.Shape::parent_space_half_thickness());
+  for (const Matrix4& m : {scaling(2.5, 2.5, 2.5), translation(1, 2, 3) * rotation_z(0.3) * scaling(10, 0.01, 10),
+                           rotation_x(1.5707) * scaling(0.33, 0.33, 0.33), Matrix4::identity()}) {
+    s.set_transform(m);
+    EXPECT_EQ(s.parent_space_half_thickness(), s.Shape::parent_space_half_thickness());
+  }
+  s.set_transform(scaling(4, 4, 4));
+  EXPECT_NEAR(s.parent_space_half_thickness(), 4 / std::sqrt(3.0), 1e-15);
+}
+
 TEST(SpheresUnderSimilarity, AMirrorKeepsTheNormalOutwards) {
   Sphere s;
   s.set_transform(translation(1, 2, 3) * scaling(-2, -2, -2));
