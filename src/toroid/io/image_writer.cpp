@@ -180,9 +180,27 @@ bool srgb_codes(ImageFormat format, const ImageWriteOptions& options) {
 }
 
 void encode_codes(const Color* pixels, int count, double scale, bool srgb, unsigned char* codes) {
-  for (int i = 0; i < count; ++i) {
-    const Color& c = pixels[i];
-    for (const double v : {c.r * scale, c.g * scale, c.b * scale}) *codes++ = srgb ? linear_to_srgb8(v) : ppm_byte(v);
+  if (!srgb) {
+    for (int i = 0; i < count; ++i) {
+      const Color& c = pixels[i];
+      for (const double v : {c.r * scale, c.g * scale, c.b * scale}) *codes++ = ppm_byte(v);
+    }
+    return;
+  }
+  // A chunk of scaled channels at a time, through the row form of the sRGB
+  // encoding (one table lookup per chunk, not per channel).
+  constexpr int kChunk = 128;
+  double values[3 * kChunk];
+  for (int first = 0; first < count; first += kChunk) {
+    const int n = std::min(kChunk, count - first);
+    for (int i = 0; i < n; ++i) {
+      const Color& c = pixels[first + i];
+      values[3 * i] = c.r * scale;
+      values[3 * i + 1] = c.g * scale;
+      values[3 * i + 2] = c.b * scale;
+    }
+    linear_to_srgb8(values, 3 * n, codes);
+    codes += 3 * n;
   }
 }
 

@@ -63,15 +63,26 @@ Encoding make_encoding() {
   return e;
 }
 
-}  // namespace
-
-unsigned char linear_to_srgb8(double c) {
+const Encoding& encoding() {
   static const Encoding e = make_encoding();
+  return e;
+}
+
+inline unsigned char encode(const Encoding& e, double c) {
   if (!(c > 0)) return 0;  // also NaN
   if (c >= 1) return 255;
   int code = e.code_at_bucket[static_cast<int>(c * kBuckets)];
   while (c >= e.boundary[code]) ++code;
   return static_cast<unsigned char>(code);
+}
+
+}  // namespace
+
+unsigned char linear_to_srgb8(double c) { return encode(encoding(), c); }
+
+void linear_to_srgb8(const double* linear, int n, unsigned char* codes) {
+  const Encoding& e = encoding();
+  for (int i = 0; i < n; ++i) codes[i] = encode(e, linear[i]);
 }
 
 double srgb8_to_linear(unsigned char code) {

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 namespace toroid {
 namespace {
@@ -41,6 +42,15 @@ TEST(Srgb, EncodingClampsAndRejectsNaN) {
   EXPECT_EQ(linear_to_srgb8(std::nan("")), 0);
   EXPECT_EQ(linear_to_srgb8(1.0), 255);
   EXPECT_EQ(linear_to_srgb8(INFINITY), 255);
+}
+
+TEST(Srgb, TheRowFormGivesEachValuesCode) {
+  std::vector<double> values = {-1.0, 0.0, std::nan(""), 1.0, INFINITY, 0.0031308, 0.5, 0.99999};
+  for (int i = 0; i <= 1000; ++i) values.push_back(i / 1000.0);
+  std::vector<unsigned char> codes(values.size() + 1, 77);
+  linear_to_srgb8(values.data(), static_cast<int>(values.size()), codes.data());
+  for (std::size_t i = 0; i < values.size(); ++i) ASSERT_EQ(codes[i], linear_to_srgb8(values[i])) << values[i];
+  EXPECT_EQ(codes.back(), 77);  // nothing written past n
 }
 
 }  // namespace
