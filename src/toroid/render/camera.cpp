@@ -24,6 +24,7 @@ Camera::Camera(int hsize, int vsize, double field_of_view)
 void Camera::set_transform(const Matrix4& m) {
   transform_ = m;
   inverse_ = inverse(m);
+  origin_ = inverse_ * point(0, 0, 0);
 }
 
 Ray Camera::ray_for_pixel(int px, int py, double dx, double dy) const {
@@ -34,8 +35,7 @@ Ray Camera::ray_for_pixel(int px, int py, double dx, double dy) const {
   const double world_x = half_width_ - xoffset;
   const double world_y = half_height_ - yoffset;
   const Tuple pixel = inverse_ * point(world_x, world_y, -1);
-  const Tuple origin = inverse_ * point(0, 0, 0);
-  return Ray{origin, normalize(pixel - origin)};
+  return Ray{origin_, normalize(pixel - origin_)};
 }
 
 Canvas render(const Camera& camera, const World& world) {

@@ -43,6 +43,7 @@ class Camera {
   double pixel_size_ = 0;
   Matrix4 transform_ = Matrix4::identity();
   Matrix4 inverse_ = Matrix4::identity();
+  Tuple origin_ = point(0, 0, 0);  // inverse_ * point(0, 0, 0): every ray's origin
 };
 
 // One ray through the centre of each pixel, serially.
