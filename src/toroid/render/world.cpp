@@ -64,13 +64,14 @@ bool is_shadowed(const World& world, const Tuple& point, const PointLight& light
 
 namespace {
 
-// Whether an object that casts shadows lies on the shadow ray from `point`
-// along the unit `direction` before `distance` (the light). `light` names
-// the light for the shadow cache.
-bool shadow_ray_blocked(const World& world, const Tuple& point, const Tuple& direction, double distance,
-                        const Tuple* light) {
+// Whether an object that casts shadows lies between `point` and the light
+// at `light` (whose address also names it for the shadow cache). The ray
+// goes along light - point, not normalised: the light is at t = 1, and the
+// walk need not wait for a square root and a division.
+bool shadow_ray_blocked(const World& world, const Tuple& point, const Tuple& light) {
   ++rays_traced_on_this_thread();
-  const Ray ray{point, direction};
+  const Ray ray{point, light - point};
+  constexpr double distance = 1;  // the light, in the ray's t
   // Any blocker between the point and the light will do. Neighbouring shadow
   // rays towards one light tend to be blocked by the same object (POV-Ray's
   // shadow cache): try the last blocker of this thread's rays towards this
@@ -88,8 +89,8 @@ bool shadow_ray_blocked(const World& world, const Tuple& point, const Tuple& dir
       cached_index = world.index.serial();
       for (Slot& slot : slots) slot = {};
     }
-    Slot& slot = slots[(reinterpret_cast<std::uintptr_t>(light) * 0x9E3779B97F4A7C15u) >> 62];
-    if (slot.light != light) slot = {light, nullptr};
+    Slot& slot = slots[(reinterpret_cast<std::uintptr_t>(&light) * 0x9E3779B97F4A7C15u) >> 62];
+    if (slot.light != &light) slot = {&light, nullptr};
     if (slot.blocker) {
       if (slot.blocker->blocks(ray, distance)) return true;
       slot.blocker = nullptr;
@@ -104,9 +105,7 @@ bool shadow_ray_blocked(const World& world, const Tuple& point, const Tuple& dir
 }  // namespace
 
 bool is_shadowed(const World& world, const Tuple& light_position, const Tuple& point) {
-  const Tuple to_light = light_position - point;
-  const double distance = magnitude(to_light);
-  return shadow_ray_blocked(world, point, to_light / distance, distance, &light_position);
+  return shadow_ray_blocked(world, point, light_position);
 }
 
 double intensity_at(const PointLight& light, const Tuple& point, const World& world) {
@@ -158,15 +157,13 @@ Color shade(const World& world, const Computations& comps, int remaining, const 
   const Material& m = comps.object->material();
   Color surface = kBlack;
   for (const PointLight& light : world.lights) {
-    // The direction to the light is lighting's lightv and the shadow ray's
-    // direction alike (normalize, written out for the distance).
-    const Tuple to_light = light.position - comps.over_point;
-    const double distance = magnitude(to_light);
-    const Tuple lightv = to_light / distance;
+    // lighting's lightv; the shadow ray goes along light - point itself
+    // (shadow_ray_blocked), so that it need not wait for this division.
+    const Tuple lightv = normalize(light.position - comps.over_point);
     // A light behind the surface lights nothing, shadowed or not (lighting's
     // own test, on the same vector): spare its shadow ray.
     const bool faces_light = dot(lightv, comps.normalv) >= 0;
-    const bool shadowed = faces_light && shadow_ray_blocked(world, comps.over_point, lightv, distance, &light.position);
+    const bool shadowed = faces_light && shadow_ray_blocked(world, comps.over_point, light.position);
     surface += lighting_towards(m, *comps.object, light, comps.over_point, lightv, comps.eyev, comps.normalv,
                                 shadowed ? 0.0 : 1.0);
   }
