@@ -71,7 +71,7 @@ namespace {
 bool shadow_ray_blocked(const World& world, const Tuple& point, const Tuple& light) {
   ++rays_traced_on_this_thread();
   const Ray ray{point, light - point};
-  constexpr double distance = 1;  // the light, in the ray's t
+  constexpr double t_light = 1;
   // Any blocker between the point and the light will do. Neighbouring shadow
   // rays towards one light tend to be blocked by the same object (POV-Ray's
   // shadow cache): try the last blocker of this thread's rays towards this
@@ -92,13 +92,13 @@ bool shadow_ray_blocked(const World& world, const Tuple& point, const Tuple& lig
     Slot& slot = slots[(reinterpret_cast<std::uintptr_t>(&light) * 0x9E3779B97F4A7C15u) >> 62];
     if (slot.light != &light) slot = {&light, nullptr};
     if (slot.blocker) {
-      if (slot.blocker->blocks(ray, distance)) return true;
+      if (slot.blocker->blocks(ray, t_light)) return true;
       slot.blocker = nullptr;
     }
-    return world.index.blocks(ray, distance, &slot.blocker);
+    return world.index.blocks(ray, t_light, &slot.blocker);
   }
   for (const auto& object : world.objects)
-    if (object->blocks(ray, distance)) return true;
+    if (object->blocks(ray, t_light)) return true;
   return false;
 }
 

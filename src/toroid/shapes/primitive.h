@@ -38,10 +38,7 @@ class Primitive : public Shape {
   }
 
   // Shape's, with Derived's half_thickness called directly.
-  double parent_space_half_thickness() const override {
-    const double half = self().Derived::half_thickness();
-    return half == 0 ? 0 : half / linear_frobenius_norm(inverse_affine().m);
-  }
+  double parent_space_half_thickness() const override { return half_in_parent_space(self().Derived::half_thickness()); }
 
   // The parent-space queries: the ray into object space, then Derived's
   // local query called directly (one virtual call per query, not two).

@@ -29,10 +29,7 @@ Tuple Shape::normal_at(const Tuple& world_point, const Intersection& hit) const 
 
 BoundingBox Shape::parent_space_bounds() const { return ::toroid::transform(bounds(), transform()); }
 
-double Shape::parent_space_half_thickness() const {
-  const double half = half_thickness();
-  return half == 0 ? 0 : half / linear_frobenius_norm(inverse_.m);
-}
+double Shape::parent_space_half_thickness() const { return half_in_parent_space(half_thickness()); }
 
 double Shape::half_thickness() const {
   const BoundingBox box = bounds();

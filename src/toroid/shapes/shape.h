@@ -143,6 +143,9 @@ class Shape {
  protected:
   // Told by a child (see bounds_changed) that its box may have moved.
   virtual void child_bounds_changed() const {}
+  // `half` (a half thickness in object space) in the parent's space, as
+  // parent_space_half_thickness gives it.
+  double half_in_parent_space(double half) const { return half == 0 ? 0 : half / linear_frobenius_norm(inverse_.m); }
   // Told by set_transform, after the new inverse is in place.
   virtual void transform_changed() {}
 
