@@ -31,12 +31,50 @@
 #include "toroid/roots/monotone.h"
 #include "toroid/roots/polynomial.h"
 #include "toroid/torus/hole.h"
+#include "toroid/torus/solver_copies.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+// The public calls below run the copy of this file built for AVX2 and FMA
+// where the processor has them (solver_copies.h); the copy itself, and the
+// CUDA build, run this code.
+#if TOROID_BATCH_X86_SIMD && !defined(TOROID_SOLVER_COPY) && !defined(__CUDACC__)
+#define TOROID_DISPATCHES_SOLVER 1
+#else
+#define TOROID_DISPATCHES_SOLVER 0
+#endif
+
 namespace toroid {
+
+#if !defined(TOROID_SOLVER_COPY) && !defined(__CUDACC__)
+namespace x86_64_v3 {
+namespace {
+bool& enabled_flag() {
+  static bool flag = available();
+  return flag;
+}
+}  // namespace
+
+bool available() {
+#if TOROID_BATCH_X86_SIMD
+  static const bool has = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
+           __builtin_cpu_supports("bmi2");
+  }();
+  return has;
+#else
+  return false;
+#endif
+}
+
+bool enabled() { return enabled_flag(); }
+void set_enabled_for_testing(bool enabled) { enabled_flag() = enabled && available(); }
+}  // namespace x86_64_v3
+#endif
+
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -714,6 +752,9 @@ TOROID_HD void torus_quartic_coefficients(double R, double r, const double o[3],
 
 TOROID_HD int intersect_torus(double major, double minor, const double origin[3], const double direction[3],
                               double t[4], TorusSolver solver) {
+#if TOROID_DISPATCHES_SOLVER
+  if (x86_64_v3::enabled()) return x86_64_v3::intersect_torus(major, minor, origin, direction, t, solver);
+#endif
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (solver == TorusSolver::Default)
     return solve_default(major, minor, origin, direction, -kInf, kInf, Search::All, t);
@@ -756,11 +797,18 @@ TOROID_HD bool first_root_in(double major, double minor, const double origin[3],
 
 TOROID_HD bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
                                        double t_min, double t_max, double* t, TorusSolver solver) {
+#if TOROID_DISPATCHES_SOLVER
+  if (x86_64_v3::enabled())
+    return x86_64_v3::intersect_torus_nearest(major, minor, origin, direction, t_min, t_max, t, solver);
+#endif
   return first_root_in(major, minor, origin, direction, t_min, t_max, t, solver, Search::First);
 }
 
 TOROID_HD bool torus_blocks(double major, double minor, const double origin[3], const double direction[3], double t_min,
                             double t_max, TorusSolver solver) {
+#if TOROID_DISPATCHES_SOLVER
+  if (x86_64_v3::enabled()) return x86_64_v3::torus_blocks(major, minor, origin, direction, t_min, t_max, solver);
+#endif
   double t;
   return first_root_in(major, minor, origin, direction, t_min, t_max, &t, solver, Search::Any);
 }
