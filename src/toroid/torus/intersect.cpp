@@ -37,9 +37,9 @@
 #include <cmath>
 #include <limits>
 
-// The public calls below run the copy of this file built for AVX2 and FMA
-// where the processor has them (solver_copies.h); the copy itself, and the
-// CUDA build, run this code.
+// The public calls below run the default solver in the copy of this file
+// built for AVX2 and FMA where the processor has them (solver_copies.h); the
+// closed forms, the copy itself and the CUDA build run this code.
 #if TOROID_BATCH_X86_SIMD && !defined(TOROID_SOLVER_COPY) && !defined(__CUDACC__)
 #define TOROID_DISPATCHES_SOLVER 1
 #else
@@ -753,7 +753,8 @@ TOROID_HD void torus_quartic_coefficients(double R, double r, const double o[3],
 TOROID_HD int intersect_torus(double major, double minor, const double origin[3], const double direction[3],
                               double t[4], TorusSolver solver) {
 #if TOROID_DISPATCHES_SOLVER
-  if (x86_64_v3::enabled()) return x86_64_v3::intersect_torus(major, minor, origin, direction, t, solver);
+  if (solver == TorusSolver::Default && x86_64_v3::enabled())
+    return x86_64_v3::intersect_torus(major, minor, origin, direction, t, solver);
 #endif
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (solver == TorusSolver::Default)
@@ -798,7 +799,7 @@ TOROID_HD bool first_root_in(double major, double minor, const double origin[3],
 TOROID_HD bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
                                        double t_min, double t_max, double* t, TorusSolver solver) {
 #if TOROID_DISPATCHES_SOLVER
-  if (x86_64_v3::enabled())
+  if (solver == TorusSolver::Default && x86_64_v3::enabled())
     return x86_64_v3::intersect_torus_nearest(major, minor, origin, direction, t_min, t_max, t, solver);
 #endif
   return first_root_in(major, minor, origin, direction, t_min, t_max, t, solver, Search::First);
@@ -807,7 +808,8 @@ TOROID_HD bool intersect_torus_nearest(double major, double minor, const double 
 TOROID_HD bool torus_blocks(double major, double minor, const double origin[3], const double direction[3], double t_min,
                             double t_max, TorusSolver solver) {
 #if TOROID_DISPATCHES_SOLVER
-  if (x86_64_v3::enabled()) return x86_64_v3::torus_blocks(major, minor, origin, direction, t_min, t_max, solver);
+  if (solver == TorusSolver::Default && x86_64_v3::enabled())
+    return x86_64_v3::torus_blocks(major, minor, origin, direction, t_min, t_max, solver);
 #endif
   double t;
   return first_root_in(major, minor, origin, direction, t_min, t_max, &t, solver, Search::Any);

@@ -22,8 +22,10 @@
 #include <utility>
 
 // Before the rename: the copy's calls are declared in namespace toroid, and
-// so are the closed forms, which the copy calls in the baseline build (built
-// for these instructions they ran slower, CHANGELOG 2026-12-07).
+// so are the closed forms. The public calls take the copy for the default
+// solver only (built for these instructions the closed forms ran slower,
+// CHANGELOG 2026-12-07), so its closed-form branch, never taken, calls the
+// baseline's.
 #include "toroid/roots/polynomial.h"
 #include "toroid/torus/solver_copies.h"
 

@@ -2,8 +2,8 @@
 // The scalar solver's copy for x86-64 processors with AVX2, FMA, BMI1 and
 // BMI2 (torus/intersect_x86_64_v3.cpp): intersect.cpp compiled a second time
 // for those instructions, in a namespace of its own, and chosen at run time
-// by the public calls of intersect.h (the closed forms of roots/ it calls
-// stay the baseline build's).
+// by the public calls of intersect.h for the default solver (the closed
+// forms run the baseline build).
 // Without contraction of a * b + c into fused multiply-adds, every operation
 // rounds as in the baseline build, so the copy's answers are the same bits;
 // it is faster because its double-double products use the FMA instruction
