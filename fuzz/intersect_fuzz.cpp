@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Fuzz target: intersect_torus on any torus (major, minor > 0) and any ray,
 // every solver, and the roots checked as in torus_root_checks.h: 0..4,
-// finite, ascending, each on the surface within rounding.
+// finite, ascending, each on the surface within rounding; where the processor
+// runs the default solver's AVX2 copy, its answers against the baseline's.
 //
 // Input: one mode byte, then up to seven doubles (little-endian bytes,
 // missing ones 0): R, r, and five ray parameters. Random rays seldom touch a
@@ -23,6 +24,7 @@
 #include <limits>
 
 #include "toroid/torus/intersect.h"
+#include "toroid/torus/solver_copies.h"
 #include "torus_root_checks.h"
 
 namespace {
@@ -91,6 +93,44 @@ void check_nearest_from_each_root(double R, double r, const double o[3], const d
   }
 }
 
+// Where this processor runs the default solver's AVX2 copy (the public
+// calls do), the baseline build gives the same bits: every root, and the
+// nearest root and the shadow answer from the origin and from each root.
+void check_copy_matches_baseline(double R, double r, const double o[3], const double d[3], const double t[4],
+                                 int count) {
+  if (!toroid::x86_64_v3::available()) return;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  struct Answers {
+    int count;
+    double roots[4];
+    bool found[5], blocks[5];
+    double nearest[5];
+  };
+  const auto answers = [&](const double* starts) {
+    Answers a{};
+    a.count = toroid::intersect_torus(R, r, o, d, a.roots);
+    for (int i = 0; i <= count; ++i) {
+      a.nearest[i] = 0;
+      a.found[i] = toroid::intersect_torus_nearest(R, r, o, d, starts[i], kInf, &a.nearest[i]);
+      a.blocks[i] = toroid::torus_blocks(R, r, o, d, starts[i], kInf);
+    }
+    return a;
+  };
+  double starts[5] = {0, 0, 0, 0, 0};
+  for (int i = 0; i < count; ++i) starts[i + 1] = t[i];
+  toroid::x86_64_v3::set_enabled_for_testing(false);
+  const Answers base = answers(starts);
+  toroid::x86_64_v3::set_enabled_for_testing(true);
+  const Answers copy = answers(starts);
+  bool same = base.count == copy.count;
+  for (int i = 0; same && i < base.count; ++i) same = std::memcmp(&base.roots[i], &copy.roots[i], sizeof(double)) == 0;
+  for (int i = 0; same && i <= count; ++i)
+    same = base.found[i] == copy.found[i] && base.blocks[i] == copy.blocks[i] &&
+           std::memcmp(&base.nearest[i], &copy.nearest[i], sizeof(double)) == 0;
+  if (!same)
+    toroid::fuzz::fail_roots("the AVX2 copy of the solver and the baseline build differ", R, r, o, d, t, count);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -130,6 +170,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     double t[4];
     const int count = toroid::intersect_torus(R, r, o, d, t, s);
     const bool in_domain = R / r < toroid::kTorusAspectLimit;
+    if (s == toroid::TorusSolver::Default) check_copy_matches_baseline(R, r, o, d, t, count);
     if (s == toroid::TorusSolver::Default && in_domain) {
       toroid::fuzz::check_torus_roots(R, r, o, d, t, count);
       check_blocks_agrees_with_nearest(R, r, o, d, t, count);
