@@ -40,7 +40,7 @@
 // The public calls below run the default solver in the copy of this file
 // built for AVX2 and FMA where the processor has them (solver_copies.h); the
 // closed forms, the copy itself and the CUDA build run this code.
-#if TOROID_BATCH_X86_SIMD && !defined(TOROID_SOLVER_COPY) && !defined(__CUDACC__)
+#if TOROID_SOLVER_AVX2_COPY && !defined(TOROID_SOLVER_COPY) && !defined(__CUDACC__)
 #define TOROID_DISPATCHES_SOLVER 1
 #else
 #define TOROID_DISPATCHES_SOLVER 0
@@ -58,7 +58,7 @@ bool& enabled_flag() {
 }  // namespace
 
 bool available() {
-#if TOROID_BATCH_X86_SIMD
+#if TOROID_SOLVER_AVX2_COPY
   static const bool has = [] {
     __builtin_cpu_init();
     return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&

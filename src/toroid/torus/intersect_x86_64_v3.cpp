@@ -5,7 +5,7 @@
 // does, so that none of their functions, the inline ones of the headers
 // included, shares a symbol with the baseline build: the linker can never
 // hand a baseline caller a function built for these instructions.
-#if TOROID_BATCH_X86_SIMD
+#if TOROID_SOLVER_AVX2_COPY
 
 // The standard headers the sources include, first, so that the rename below
 // leaves them alone.
