@@ -50,12 +50,6 @@ namespace toroid {
 
 #if !defined(TOROID_SOLVER_COPY) && !defined(__CUDACC__)
 namespace x86_64_v3 {
-namespace {
-bool& enabled_flag() {
-  static bool flag = available();
-  return flag;
-}
-}  // namespace
 
 bool available() {
 #if TOROID_SOLVER_AVX2_COPY
@@ -70,8 +64,15 @@ bool available() {
 #endif
 }
 
-bool enabled() { return enabled_flag(); }
-void set_enabled_for_testing(bool enabled) { enabled_flag() = enabled && available(); }
+namespace {
+// Read by every public call: a plain flag, set once at load time (a call made
+// before, from another file's static initialiser, runs the baseline code,
+// which gives the same answers).
+bool enabled_flag = available();
+}  // namespace
+
+bool enabled() { return enabled_flag; }
+void set_enabled_for_testing(bool enabled) { enabled_flag = enabled && available(); }
 }  // namespace x86_64_v3
 #endif
 
