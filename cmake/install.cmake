@@ -9,9 +9,10 @@ install(TARGETS toroid_torus EXPORT toroidTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT torus NAMELINK_COMPONENT torus
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT torus)
 file(GLOB toroid_torus_headers ${PROJECT_SOURCE_DIR}/src/toroid/torus/*.h)
-# The SIMD batch's kernel, the hole test and the solver's copies are part of the library's sources, not its interface.
+# The SIMD batch's kernel, the hole and hull tests and the solver's copies are part of the library's sources, not its interface.
 list(FILTER toroid_torus_headers EXCLUDE REGEX "batch_kernel\\.h$")
 list(FILTER toroid_torus_headers EXCLUDE REGEX "hole\\.h$")
+list(FILTER toroid_torus_headers EXCLUDE REGEX "hull\\.h$")
 list(FILTER toroid_torus_headers EXCLUDE REGEX "solver_copies\\.h$")
 list(FILTER toroid_torus_headers EXCLUDE REGEX "_test[^/]*\\.h$")
 install(FILES ${toroid_torus_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/toroid/torus COMPONENT torus)

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Fuzz target: intersect_torus on any torus (major, minor > 0) and any ray,
 // every solver, and the roots checked as in torus_root_checks.h: 0..4,
-// finite, ascending, each on the surface within rounding; where the processor
+// finite, ascending, each on the surface within rounding; the window queries'
+// hull test never passing a ray that meets the torus; where the processor
 // runs the default solver's AVX2 copy, its answers against the baseline's.
 //
 // Input: one mode byte, then up to seven doubles (little-endian bytes,
@@ -23,6 +24,7 @@
 #include <cstring>
 #include <limits>
 
+#include "toroid/torus/hull.h"
 #include "toroid/torus/intersect.h"
 #include "toroid/torus/solver_copies.h"
 #include "torus_root_checks.h"
@@ -31,32 +33,46 @@ namespace {
 
 bool finite3(const double v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
-// torus_blocks answers whether the nearest-root query finds a root in the
-// window: checked on windows that start at the origin (a shadow ray leaving
-// a surface), beside each root and between roots, and end there or at
-// infinity. A window's end within the roots' rounding (a few ulps of
-// |o| + |t d| + R + r, in t, and a few subnormal steps) of a root is left
-// out: whether that root lies inside is not decided by either query.
-void check_blocks_agrees_with_nearest(double R, double r, const double o[3], const double d[3], const double t[4],
-                                      int count) {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  const double len = std::hypot(d[0], d[1], d[2]);
-  const double o_len = std::hypot(o[0], o[1], o[2]);
-  // (At least a few subnormal steps: t itself is no finer than those.)
-  const auto rounding = [&](double ti) {
+// The rounding of the roots, in t: a few ulps of |o| + |t d| + R + r, and a
+// few subnormal steps (t itself is no finer than those). Whether a root
+// within it of a window's end lies inside is not decided by any query.
+struct RootRounding {
+  double R, r, len, o_len;
+  RootRounding(double major, double minor, const double o[3], const double d[3])
+      : R(major), r(minor), len(std::hypot(d[0], d[1], d[2])), o_len(std::hypot(o[0], o[1], o[2])) {}
+  double operator()(double ti) const {
     return std::max(0x1p-40 * (o_len + std::abs(ti) * len + R + r) / len,
                     16 * std::numeric_limits<double>::denorm_min());
-  };
-  double ends[16];
+  }
+};
+
+// Window ends for the checks below: the origin, beside each root (1e-3 r
+// away, or beyond its rounding) and between roots. Returns their count
+// (at most 12).
+int ends_beside_roots(const RootRounding& rounding, const double t[4], int count, double* ends) {
   int n = 0;
   ends[n++] = 0;
-  ends[n++] = kInf;
   for (int i = 0; i < count; ++i) {
-    const double offset = std::max(1e-3 * r / len, 16 * rounding(t[i]));
+    const double offset = std::max(1e-3 * rounding.r / rounding.len, 16 * rounding(t[i]));
     ends[n++] = t[i] - offset;
     ends[n++] = t[i] + offset;
     if (i + 1 < count) ends[n++] = 0.5 * (t[i] + t[i + 1]);
   }
+  return n;
+}
+
+// torus_blocks answers whether the nearest-root query finds a root in the
+// window: checked on windows that start at the origin (a shadow ray leaving
+// a surface), beside each root and between roots, and end there or at
+// infinity. A window's end within the roots' rounding of a root is left
+// out: whether that root lies inside is not decided by either query.
+void check_blocks_agrees_with_nearest(double R, double r, const double o[3], const double d[3], const double t[4],
+                                      int count) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const RootRounding rounding(R, r, o, d);
+  double ends[13];
+  int n = ends_beside_roots(rounding, t, count, ends);
+  ends[n++] = kInf;
   const auto undecided = [&](double end) {
     for (int i = 0; i < count; ++i)
       if (std::abs(end - t[i]) <= rounding(t[i])) return true;
@@ -73,6 +89,26 @@ void check_blocks_agrees_with_nearest(double R, double r, const double o[3], con
         toroid::fuzz::fail_roots("torus_blocks disagrees with intersect_torus_nearest", R, r, o, d, t, count);
       }
     }
+}
+
+// The window queries' hull test (hull.h) passes no ray that meets the
+// torus after its start: checked from the origin and from beside each root
+// and between roots, against the list (the all-roots call does not use the
+// test). A root within the roots' rounding of the start is not decided.
+void check_hull_test_passes_no_meeting_ray(double R, double r, const double o[3], const double d[3], const double t[4],
+                                           int count) {
+  const RootRounding rounding(R, r, o, d);
+  double starts[12];
+  const int n = ends_beside_roots(rounding, t, count, starts);
+  for (int i = 0; i < n; ++i) {
+    if (!toroid::ray_leaves_hull(R, r, o, d, starts[i])) continue;
+    for (int j = 0; j < count; ++j)
+      if (t[j] > starts[i] + rounding(t[j])) {
+        std::fprintf(stderr, "from %.17g the hull test passes the ray, which meets the torus at %.17g\n", starts[i],
+                     t[j]);
+        toroid::fuzz::fail_roots("the hull test passes a ray that meets the torus", R, r, o, d, t, count);
+      }
+  }
 }
 
 // A caller that walks the roots one at a time asks for the nearest root
@@ -175,6 +211,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       toroid::fuzz::check_torus_roots(R, r, o, d, t, count);
       check_blocks_agrees_with_nearest(R, r, o, d, t, count);
       check_nearest_from_each_root(R, r, o, d, t, count);
+      check_hull_test_passes_no_meeting_ray(R, r, o, d, t, count);
     } else {
       // The closed-form solvers make no accuracy promise (docs/torus.md),
       // nor the default one on tubes thinner than its stated domain: only

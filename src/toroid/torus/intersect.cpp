@@ -31,6 +31,7 @@
 #include "toroid/roots/monotone.h"
 #include "toroid/roots/polynomial.h"
 #include "toroid/torus/hole.h"
+#include "toroid/torus/hull.h"
 #include "toroid/torus/solver_copies.h"
 
 #include <algorithm>
@@ -651,6 +652,15 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
                                                            const CallerWindow& caller, Search search, double t[4]) {
   const ShiftedRay ray = shift_to_nearest_centre_point(origin, d);
   const Window window{t_min - ray.t_shift, t_max - ray.t_shift, ray.t_shift, caller};
+  // A window query on a ray that leaves the torus's hull from the window's
+  // start (hull.h): a shadow or reflected ray from the tube's outer half.
+  // Only a window that starts less than R / |d| before the ray's point
+  // nearest the centre can: rays aimed at the torus from afar skip the test.
+  if (search != Search::All) {
+    const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if ((window.s_min >= 0 || window.s_min * window.s_min * dd < R * R) && ray_leaves_hull(R, r, origin, d, t_min))
+      return 0;
+  }
   double s_out[4], s_in[4];
   const TorusFactor outer(ray.o, d, R, r, -1.0);
   // With the lemon's roots to merge, the outer sheet's are all needed.
@@ -723,8 +733,8 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
 // origin) and the direction are each scaled by a power of two, which is
 // exact, and so is scaling t back (solve_rescaled). Not recursive, so that
 // the device's stack size is known.
-TOROID_HD int solve_default(double R, double r, const double origin[3], const double d[3], double t_min, double t_max,
-                            Search search, double t[4]) {
+[[gnu::always_inline]] TOROID_HD inline int solve_default(double R, double r, const double origin[3], const double d[3],
+                                                          double t_min, double t_max, Search search, double t[4]) {
   if (!in_solver_range(R, r, d)) return solve_rescaled(R, r, origin, d, t_min, t_max, search, t);
   return solve_in_range(R, r, origin, d, t_min, t_max, CallerWindow{t_min, t_max, 0}, search, t);
 }

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+// The convex hull test of the default solver's window queries (the nearest
+// root and the shadow test, intersect.cpp): a ray that starts outside the
+// torus's convex hull and moves away from it meets no point of the torus.
+// Internal: not installed.
+//
+// The hull, of a torus of any kind, is the tube's section swept round the
+// axis with the hole filled: the slab |z| <= r, and within it the points
+// with rho <= R + sqrt(r^2 - z^2). Two planes that hold the hull behind them
+// give the test:
+//   - a face of the slab, z = +-r: a ray that starts beyond it and does not
+//     turn back towards it never enters the slab;
+//   - from a point q with rho > R outside the tube, the tangent plane at the
+//     tube point nearest q, whose normal is q - c (c the point of the centre
+//     circle below q): the hull lies behind it, so a ray whose direction has
+//     a positive component along q - c only moves away.
+// A renderer's shadow and reflected rays leave a torus this way wherever
+// they start on the tube's outer half, and so do rays refracted out of it.
+//
+// Each test has a margin of 2^-30 of the scale of the numbers it is made
+// of (|origin|, |t_min d|, R + r), far above their rounding (a few eps of
+// that scale), so a ray that passes stays more than 2^-31 of that scale
+// away from the torus, while every root the solver reports lies within a
+// few eps of it of the surface (fuzz/torus_root_checks.h): no root the
+// search could find lies on such a ray, and the test changes no answer,
+// only its cost.
+#pragma once
+
+#include <cmath>
+
+#include "toroid/math/device.h"
+
+namespace toroid {
+
+// Whether the ray o + t d, for every t >= t_min, stays outside the convex
+// hull of the torus (major, minor) with a margin; false where unsure
+// (within the margins, for a non-finite point at t_min, and for a torus size
+// or |d|^2 outside the range where the products below stay normal: the
+// solver's range, 2^-100..2^100 and 2^-400..2^400).
+[[gnu::always_inline]] TOROID_HD inline bool ray_leaves_hull(double major, double minor, const double origin[3],
+                                                             const double d[3], double t_min) {
+  double q[3];
+  for (int i = 0; i < 3; ++i) q[i] = origin[i] + t_min * d[i];
+  // The tube's plane needs q.d >= -R |d| (c.d >= -R |d|), and so does the
+  // slab's where rho <= R: a ray aimed at the torus, as a camera's is,
+  // leaves here, the common case at the cost of two dot products.
+  const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  const double qd = (origin[0] * d[0] + origin[1] * d[1] + origin[2] * d[2]) + t_min * dd;
+  if (qd < 0 && qd * qd >= major * major * dd) return false;
+  const double size = major + minor;
+  if (!(size > 0x1p-100 && size < 0x1p100 && dd > 0x1p-400 && dd < 0x1p400)) return false;
+  const double scale = std::abs(origin[0]) + std::abs(origin[1]) + std::abs(origin[2]) +
+                       std::abs(t_min) * (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2])) + major + minor;
+  const double margin = 0x1p-30 * scale;
+  // Beyond a face of the slab, not turning back towards it.
+  if (std::abs(q[2]) - minor > margin && (q[2] > 0 ? d[2] >= 0 : d[2] <= 0)) return true;
+  // Outside the tube's outer half, moving away from its tangent plane:
+  // (q - c).d > 0, times rho. rho is beyond R by more than its rounding, so
+  // the nearest point of the hull does lie on the outer half.
+  const double rho = std::sqrt(q[0] * q[0] + q[1] * q[1]);
+  const double a = rho - major;
+  if (!(a > margin)) return false;
+  const double gap = a * a + q[2] * q[2] - minor * minor;
+  const double away = a * (q[0] * d[0] + q[1] * d[1]) + rho * (q[2] * d[2]);
+  const double d_sum = std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2]);
+  return gap > margin * scale && away > margin * rho * d_sum;
+}
+
+}  // namespace toroid
