@@ -6,9 +6,10 @@
 //   nearest: the renderer's query, the nearest root in (0, inf), mixed set;
 //   blocks:  the shadow query, torus_blocks: whether a root lies in (0, inf),
 //            mixed set;
-//   surface: the shadow query on rays that leave the torus, as a renderer's
-//            shadow rays do: from 1e-5 above a random point of the surface
-//            (the renderer's over-point), in a random direction away from it;
+//   surface: the shadow query and the nearest root on rays that leave the
+//            torus, as a renderer's shadow and reflected rays do: from 1e-5
+//            above a random point of the surface (the renderer's
+//            over-point), in a random direction away from it;
 //   batch:   intersect_torus_batch_on each path (scalar, avx2, avx512) over
 //            the 4096 rays of a set: ns per ray, all roots.
 #include <benchmark/benchmark.h>
@@ -111,8 +112,8 @@ void BM_AllRoots(benchmark::State& state, toroid::TorusSolver solver, bool hits_
   state.SetItemsProcessed(state.iterations());
 }
 
-void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver) {
-  const auto& rs = rays(false);
+void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver, bool from_surface) {
+  const auto& rs = from_surface ? surface_rays() : rays(false);
   size_t i = 0;
   double t = 0;
   for (auto _ : state) {
@@ -169,9 +170,11 @@ TOROID_BENCH(BM_AllRoots, tianheng_mixed, TorusSolver::Tianheng, false);
 TOROID_BENCH(BM_AllRoots, default_hits, TorusSolver::Default, true);
 TOROID_BENCH(BM_AllRoots, ferrari_hits, TorusSolver::Ferrari, true);
 TOROID_BENCH(BM_AllRoots, tianheng_hits, TorusSolver::Tianheng, true);
-TOROID_BENCH(BM_Nearest, default_mixed, TorusSolver::Default);
-TOROID_BENCH(BM_Nearest, ferrari_mixed, TorusSolver::Ferrari);
-TOROID_BENCH(BM_Nearest, tianheng_mixed, TorusSolver::Tianheng);
+TOROID_BENCH(BM_Nearest, default_mixed, TorusSolver::Default, false);
+TOROID_BENCH(BM_Nearest, ferrari_mixed, TorusSolver::Ferrari, false);
+TOROID_BENCH(BM_Nearest, tianheng_mixed, TorusSolver::Tianheng, false);
+TOROID_BENCH(BM_Nearest, default_surface, TorusSolver::Default, true);
+TOROID_BENCH(BM_Nearest, ferrari_surface, TorusSolver::Ferrari, true);
 TOROID_BENCH(BM_Blocks, default_mixed, TorusSolver::Default, false);
 TOROID_BENCH(BM_Blocks, ferrari_mixed, TorusSolver::Ferrari, false);
 TOROID_BENCH(BM_Blocks, default_surface, TorusSolver::Default, true);

@@ -732,7 +732,9 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
 // from unit length |d|^2 and the derivatives: then the geometry (radii and
 // origin) and the direction are each scaled by a power of two, which is
 // exact, and so is scaling t back (solve_rescaled). Not recursive, so that
-// the device's stack size is known.
+// the device's stack size is known. Inlined into each caller, so that each
+// query's path is built for its own search (the all-roots path without the
+// window queries' hull test).
 [[gnu::always_inline]] TOROID_HD inline int solve_default(double R, double r, const double origin[3], const double d[3],
                                                           double t_min, double t_max, Search search, double t[4]) {
   if (!in_solver_range(R, r, d)) return solve_rescaled(R, r, origin, d, t_min, t_max, search, t);
