@@ -14,7 +14,7 @@
 # and indexing). Then it renders flat-white masks of the tori (silhouettes)
 # with both and counts the pixels that differ.
 #
-# Installs what is missing (tools/install-deps.sh, plus povray and time) and
+# Installs what is missing (tools/install-deps.sh, plus povray and python3) and
 # builds build/toroid when it is not there. Writes scenes, images and the
 # raw timings under --out (default build/vs-povray).
 set -euo pipefail
@@ -37,7 +37,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-"$root/tools/install-deps.sh" povray time
+"$root/tools/install-deps.sh" povray python3
 toroid="$root/build/toroid"
 if [ ! -x "$toroid" ]; then
   cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -48,14 +48,13 @@ out=$(cd "$out" && pwd)
 g++ -O2 -std=c++20 -o "$out/image_diff" "$here/image_diff.cpp"
 rm -f "$out/timings.txt" "$out/masks.txt"
 
-# cpu_once CMD...: the user + sys time of one run.
+# cpu_once CMD...: the user + sys time of one run, to the millisecond.
 cpu_once() {
-  /usr/bin/time -f "%U %S" -o "$out/time.txt" "$@" >/dev/null 2>"$out/stderr.txt" || {
+  "$root/bench/cpu_seconds.py" --stderr "$out/stderr.txt" "$@" || {
     echo "run.sh: failed: $*" >&2
     cat "$out/stderr.txt" >&2
     exit 1
   }
-  awk '{ printf "%.3f", $1 + $2 }' "$out/time.txt"
 }
 # least A B: the smaller number (B when A is empty).
 least() { awk -v a="$1" -v b="$2" 'BEGIN { print (a == "" || b + 0 < a + 0) ? b : a }'; }

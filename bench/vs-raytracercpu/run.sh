@@ -48,7 +48,7 @@ if [ -z "$peer" ] || [ ! -x "$peer" ]; then
   exit 2
 fi
 peer=$(cd "$(dirname "$peer")" && pwd)/$(basename "$peer")
-"$root/tools/install-deps.sh" time
+"$root/tools/install-deps.sh" python3
 if [ "$toroid" = "$root/build/toroid" ] && [ ! -x "$toroid" ]; then
   cmake -S "$root" -B "$root/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
   ninja -C "$root/build" toroid
@@ -72,14 +72,14 @@ open(sys.argv[2], "w").write(text)
 EOF
 }
 
-# user_seconds CMD...: the user CPU time of one run, on core 0.
+# user_seconds CMD...: the user CPU time of one run, on core 0, to the
+# millisecond.
 user_seconds() {
-  /usr/bin/time -f "%U" -o "$out/time.txt" taskset -c 0 "$@" >/dev/null 2>"$out/stderr.txt" || {
+  "$root/bench/cpu_seconds.py" --user --stderr "$out/stderr.txt" taskset -c 0 "$@" || {
     echo "run.sh: failed: $*" >&2
     cat "$out/stderr.txt" >&2
     exit 1
   }
-  cat "$out/time.txt"
 }
 least() { if [ -z "$1" ]; then echo "$2"; else awk -v a="$1" -v b="$2" 'BEGIN { print (b < a ? b : a) }'; fi; }
 
@@ -110,5 +110,5 @@ for path in "${list[@]}"; do
     [ -s "$out/peer-$name/out.ppm" ] || { echo "run.sh: the peer wrote no image for $name" >&2; exit 1; }
     t=$(least "$t" "$(user_seconds "$toroid" render "$out/$name.yml" -o "$out/$name.png" --threads 1 --max-depth 4 -q)")
   done
-  awk -v n="$name" -v p="$p" -v t="$t" 'BEGIN { printf "%-16s %10.2f %10.2f %7.2fx\n", n, p, t, p / t }'
+  awk -v n="$name" -v p="$p" -v t="$t" 'BEGIN { printf "%-16s %10.3f %10.3f %7.2fx\n", n, p, t, p / t }'
 done
