@@ -101,7 +101,7 @@ namespace {
 // parallel ray) leaves the interval as it was, because comparisons with NaN
 // fail.
 template <typename Node>
-bool enters(const Node& n, int child, const SlabRay& r, double t_max, double& entry) {
+[[gnu::always_inline]] inline bool enters(const Node& n, int child, const SlabRay& r, double t_max, double& entry) {
   double tmin = r.t_min, tmax = t_max;
   for (int a = 0; a < 3; ++a) {
     const double t0 = (static_cast<double>(n.box[r.near[a] + child]) - r.origin[a]) * r.inv[a];
@@ -128,7 +128,8 @@ __m128d load_pair(const float* p) {
 // and `t1 < tmax ? t1 : tmax`, NaN included: they return the second operand
 // when a comparison fails.
 template <typename Node>
-void enters_both(const Node& n, const SlabRay& r, double t_max, bool met[2], double entry[2]) {
+[[gnu::always_inline]] inline void enters_both(const Node& n, const SlabRay& r, double t_max, bool met[2],
+                                               double entry[2]) {
 #if defined(TOROID_SSE2)
   __m128d tmin = _mm_set1_pd(r.t_min), tmax = _mm_set1_pd(t_max);
   for (int axis = 0; axis < 3; ++axis) {
@@ -171,6 +172,23 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shape
     items.push_back(it);
   }
   if (items.empty()) return;
+  if (items.size() >= 3 && items.size() <= kSmallIndex) {
+    // The leaves' boxes as build() rounds them, in the order indexed.
+    for (std::size_t i = 0; i < items.size(); i += 2) {
+      Node n{};
+      for (int c = 0; c < 2; ++c) {
+        const bool empty = i + c >= items.size();
+        const BoundingBox& b = empty ? items[i].box : items[i + c].box;
+        const double low[3] = {b.min.x, b.min.y, b.min.z}, high[3] = {b.max.x, b.max.y, b.max.z};
+        for (int a = 0; a < 3; ++a) {
+          n.box[4 * a + c] = round_down(low[a]);
+          n.box[4 * a + 2 + c] = round_up(high[a]);
+        }
+        n.link[c] = empty ? 0 : reinterpret_cast<std::uintptr_t>(items[i + c].shape);
+      }
+      small_.push_back(n);
+    }
+  }
   nodes_.reserve(items.size() - 1);
   root_.link[0] = build(items, 0, items.size(), 0, kRoot, 0);
   has_root_ = true;
@@ -406,6 +424,38 @@ bool ShapeBvh::walk(const Ray& ray, double t_min, const double& t_max, bool any_
   }
 }
 
+// walk() for an index with small_: every leaf's box, two at a time, then
+// the shapes whose box the ray enters, nearest entry first (the order
+// indexed among equal entries), while the entry is within t_max, which
+// stop() may shorten. It skips the interior nodes' boxes, which a small
+// scene's rays mostly all enter (a room's walls have boxes as large as the
+// room, and its camera is inside them).
+template <typename Stop>
+bool ShapeBvh::walk_small(const Ray& ray, const double& t_max, Stop&& stop) const {
+  const SlabRay r(ray, 0);
+  double root_entry;
+  if (!enters(root_, 0, r, t_max, root_entry)) return false;
+  struct Entered {
+    double entry;
+    const Shape* shape;
+  } entered[kSmallIndex];
+  int n = 0;
+  for (const Node& node : small_) {
+    bool met[2];
+    double at[2];
+    enters_both(node, r, t_max, met, at);
+    for (int c = 0; c < 2; ++c) {
+      if (!met[c] || node.link[c] == 0) continue;
+      int i = n++;
+      for (; i > 0 && entered[i - 1].entry > at[c]; --i) entered[i] = entered[i - 1];
+      entered[i] = {at[c], reinterpret_cast<const Shape*>(node.link[c])};
+    }
+  }
+  for (int i = 0; i < n && entered[i].entry <= t_max; ++i)
+    if (stop(entered[i].shape)) return true;
+  return false;
+}
+
 bool ShapeBvh::intersect_nearest(const Ray& ray, double t_max, Intersection& hit) const {
   bool found = false;
   auto try_shape = [&](const Shape* s) {
@@ -424,7 +474,10 @@ bool ShapeBvh::intersect_nearest(const Ray& ray, double t_max, Intersection& hit
     return false;
   });
   for (const Shape* s : unbounded_) try_shape(s);
-  walk(ray, 0, t_max, true, try_shape);
+  if (small_.empty())
+    walk(ray, 0, t_max, true, try_shape);
+  else
+    walk_small(ray, t_max, try_shape);
   return found;
 }
 
@@ -442,7 +495,7 @@ bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const
   if (plane_blocks) return true;
   for (const Shape* s : unbounded_)
     if (blocked_by(s)) return true;
-  return walk(ray, 0, t_max, true, blocked_by);
+  return small_.empty() ? walk(ray, 0, t_max, true, blocked_by) : walk_small(ray, t_max, blocked_by);
 }
 
 const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
@@ -473,7 +526,7 @@ const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections&
 }
 
 std::size_t ShapeBvh::bytes() const {
-  return nodes_.capacity() * sizeof(Node) + planes_.capacity() * sizeof(PlanePair) +
+  return (nodes_.capacity() + small_.capacity()) * sizeof(Node) + planes_.capacity() * sizeof(PlanePair) +
          unbounded_.capacity() * sizeof(const Shape*);
 }
 

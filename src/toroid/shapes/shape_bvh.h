@@ -110,7 +110,14 @@ class ShapeBvh {
   // unused); has_root_ is false when nothing bounded is indexed.
   Node root_{};
   bool has_root_ = false;
-  bool two_shapes_ = false;              // two bounded shapes: see walk
+  bool two_shapes_ = false;  // two bounded shapes: see walk
+  // An index of 3 to kSmallIndex bounded shapes also keeps their leaves'
+  // boxes two to a node, in the order the shapes were indexed (an odd last
+  // node's second link is 0), for walk_small.
+  static constexpr std::size_t kSmallIndex = 8;
+  std::vector<Node> small_;
+  template <typename Stop>
+  bool walk_small(const Ray& ray, const double& t_max, Stop&& stop) const;
   std::vector<PlanePair> planes_;        // unbounded planes, tested by every query
   const Plane* odd_plane_ = nullptr;     // the last of an odd number of them
   std::vector<const Shape*> unbounded_;  // other unbounded shapes, likewise

@@ -129,6 +129,63 @@ TEST(ShapeBvh, AnIndexOfTwoShapesFindsWhatEveryShapeGives) {
   EXPECT_TRUE(std::none_of(xs.begin(), xs.end(), [&](const Intersection& x) { return x.object == apart[0].get(); }));
 }
 
+// An index of three to eight shapes tests each shape's box and asks the
+// shapes whose box the ray enters, nearest entry first (walk_small): the
+// nearest hit and the shadow test are every shape's, for every count from
+// three to nine (nine takes the hierarchy), odd and even, in a room of
+// squashed-sphere walls (boxes as large as the room) with rays from inside
+// and outside it.
+TEST(ShapeBvh, AnIndexOfAFewShapesFindsWhatEveryShapeGives) {
+  std::vector<std::shared_ptr<Shape>> pool;
+  const auto wall = [&](const Matrix4& place) {
+    auto s = std::make_shared<Sphere>();
+    s->set_transform(place * scaling(10, 0.1, 10));
+    pool.push_back(s);
+  };
+  wall(translation(0, -4, 0));
+  wall(translation(0, 0, 8) * rotation_y(-0.7853) * rotation_x(1.5707));
+  auto torus = std::make_shared<Torus>(1.0, 0.3);
+  torus->set_transform(translation(2, 1, -1) * rotation_x(0.8));
+  pool.push_back(torus);
+  wall(translation(0, 0, 8) * rotation_y(0.7853) * rotation_x(1.5707));
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> pos(-6, 6), size(0.3, 2.0);
+  for (int i = 0; i < 5; ++i) {
+    auto s = std::make_shared<Sphere>();
+    const double k = size(rng);
+    s->set_transform(translation(pos(rng), pos(rng), pos(rng)) * scaling(k, k * 0.7, k));
+    if (i == 2) s->casts_shadow = false;
+    pool.push_back(s);
+  }
+  std::vector<Ray> rays = random_rays(1500);
+  std::uniform_real_distribution<double> inside(-3, 3), dir(-1, 1);
+  for (int i = 0; i < 1500; ++i)
+    rays.push_back({point(inside(rng), inside(rng), inside(rng)), normalize(vector(dir(rng), dir(rng), dir(rng)))});
+  for (std::size_t count = 3; count <= 9; ++count) {
+    const std::vector<std::shared_ptr<Shape>> shapes(pool.begin(), pool.begin() + static_cast<std::ptrdiff_t>(count));
+    const ShapeBvh bvh(shapes);
+    int hits = 0, blocked = 0;
+    for (const Ray& ray : rays) {
+      Intersection expected, got;
+      const bool found = nearest_of_every_shape(shapes, ray, expected);
+      ASSERT_EQ(bvh.intersect_nearest(ray, kInf, got), found) << count << " shapes";
+      if (found) {
+        ++hits;
+        EXPECT_EQ(got.t, expected.t) << count << " shapes";
+        EXPECT_EQ(got.object, expected.object) << count << " shapes";
+      }
+      for (double t_max : {1.0, 4.0, kInf}) {
+        const bool blocks =
+            std::any_of(shapes.begin(), shapes.end(), [&](const auto& s) { return s->blocks(ray, t_max); });
+        ASSERT_EQ(bvh.blocks(ray, t_max), blocks) << count << " shapes, t_max " << t_max;
+        blocked += blocks;
+      }
+    }
+    EXPECT_GT(hits, 1000) << count << " shapes";  // the rays do meet the shapes
+    EXPECT_GT(blocked, 1000) << count << " shapes";
+  }
+}
+
 TEST(ShapeBvh, BlocksWhenSomeShadowCasterLiesBeforeTMax) {
   const auto shapes = scattered_shapes();
   const ShapeBvh bvh(shapes);
