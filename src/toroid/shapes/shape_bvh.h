@@ -90,6 +90,8 @@ class ShapeBvh {
                        int child);
   template <typename Stop>
   bool walk(const Ray& ray, double t_min, const double& t_max, bool any_order, Stop&& stop) const;
+  template <typename Stop>
+  bool walk_small(const Ray& ray, const double& t_max, Stop&& stop) const;
 
   // Unbounded planes, two at a time, by the one row of each one's inverse
   // transform that gives a point's object-space height (copied here: every
@@ -116,8 +118,6 @@ class ShapeBvh {
   // node's second link is 0), for walk_small.
   static constexpr std::size_t kSmallIndex = 8;
   std::vector<Node> small_;
-  template <typename Stop>
-  bool walk_small(const Ray& ray, const double& t_max, Stop&& stop) const;
   std::vector<PlanePair> planes_;        // unbounded planes, tested by every query
   const Plane* odd_plane_ = nullptr;     // the last of an odd number of them
   std::vector<const Shape*> unbounded_;  // other unbounded shapes, likewise
