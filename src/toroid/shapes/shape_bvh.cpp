@@ -47,6 +47,16 @@ float round_up(double x) {
   return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
+// Puts `b` into a node as its child's box, in float, rounded outwards.
+template <typename Node>
+void set_child_box(Node& n, int child, const BoundingBox& b) {
+  const double low[3] = {b.min.x, b.min.y, b.min.z}, high[3] = {b.max.x, b.max.y, b.max.z};
+  for (int a = 0; a < 3; ++a) {
+    n.box[4 * a + child] = round_down(low[a]);
+    n.box[4 * a + 2 + child] = round_up(high[a]);
+  }
+}
+
 bool is_bounded(const BoundingBox& b) {
   return std::isfinite(b.min.x) && std::isfinite(b.min.y) && std::isfinite(b.min.z) && std::isfinite(b.max.x) &&
          std::isfinite(b.max.y) && std::isfinite(b.max.z);
@@ -173,18 +183,12 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shape
   }
   if (items.empty()) return;
   if (items.size() >= 3 && items.size() <= kSmallIndex) {
-    // The leaves' boxes as build() rounds them, in the order indexed.
+    // The leaves' boxes as build() gives them, in the order indexed.
     for (std::size_t i = 0; i < items.size(); i += 2) {
-      Node n{};
-      for (int c = 0; c < 2; ++c) {
-        const bool empty = i + c >= items.size();
-        const BoundingBox& b = empty ? items[i].box : items[i + c].box;
-        const double low[3] = {b.min.x, b.min.y, b.min.z}, high[3] = {b.max.x, b.max.y, b.max.z};
-        for (int a = 0; a < 3; ++a) {
-          n.box[4 * a + c] = round_down(low[a]);
-          n.box[4 * a + 2 + c] = round_up(high[a]);
-        }
-        n.link[c] = empty ? 0 : reinterpret_cast<std::uintptr_t>(items[i + c].shape);
+      Node n{};  // an odd last node's second link stays 0
+      for (std::size_t c = 0; c < 2 && i + c < items.size(); ++c) {
+        set_child_box(n, static_cast<int>(c), items[i + c].box);
+        n.link[c] = reinterpret_cast<std::uintptr_t>(items[i + c].shape);
       }
       small_.push_back(n);
     }
@@ -338,14 +342,7 @@ std::uintptr_t ShapeBvh::build(std::vector<Item>& items, std::size_t begin, std:
     box.merge(items[i].box);
     centres.add_point(point(items[i].centre[0], items[i].centre[1], items[i].centre[2]));
   }
-  {
-    Node& p = parent == kRoot ? root_ : nodes_[parent];
-    const double low[3] = {box.min.x, box.min.y, box.min.z}, high[3] = {box.max.x, box.max.y, box.max.z};
-    for (int a = 0; a < 3; ++a) {
-      p.box[4 * a + child] = round_down(low[a]);
-      p.box[4 * a + 2 + child] = round_up(high[a]);
-    }
-  }
+  set_child_box(parent == kRoot ? root_ : nodes_[parent], child, box);
   if (end - begin == 1) {
     static_assert(alignof(Shape) > 1, "a leaf's link needs its low bit clear");
     return reinterpret_cast<std::uintptr_t>(items[begin].shape);
