@@ -10,6 +10,10 @@
 //            torus, as a renderer's shadow and reflected rays do: from 1e-5
 //            above a random point of the surface (the renderer's
 //            over-point), in a random direction away from it;
+//   inside:  the nearest root on rays that start inside the tube, as a
+//            renderer's refracted rays do: from 1e-5 below a random point
+//            of the surface (the renderer's under-point), in a random
+//            direction into the tube;
 //   batch:   intersect_torus_batch_on each path (scalar, avx2, avx512) over
 //            the 4096 rays of a set: ns per ray, all roots.
 #include <benchmark/benchmark.h>
@@ -67,8 +71,11 @@ std::vector<BenchRay> make_rays(bool hits_only) {
   return rays;
 }
 
-std::vector<BenchRay> make_surface_rays() {
-  std::mt19937_64 rng(7);
+// Rays from 1e-5 off a random point of the surface, in a random direction
+// away from the tube (outward) or into it.
+std::vector<BenchRay> make_surface_rays(bool outward) {
+  std::mt19937_64 rng(outward ? 7 : 11);
+  const double side = outward ? 1 : -1;
   std::uniform_real_distribution<double> angle(0, 2 * M_PI), u(-1, 1);
   std::vector<BenchRay> rays;
   while (rays.size() < 4096) {
@@ -78,11 +85,11 @@ std::vector<BenchRay> make_surface_rays() {
     double len2 = 0;
     do {
       len2 = random_in_ball(rng, u, dir);
-    } while (dir[0] * n[0] + dir[1] * n[1] + dir[2] * n[2] <= 0);
+    } while (side * (dir[0] * n[0] + dir[1] * n[1] + dir[2] * n[2]) <= 0);
     BenchRay r;
     const double ring[3] = {kR * std::cos(theta), kR * std::sin(theta), 0};
     for (int i = 0; i < 3; ++i) {
-      r.o[i] = ring[i] + (kr + 1e-5) * n[i];
+      r.o[i] = ring[i] + (kr + side * 1e-5) * n[i];
       r.d[i] = dir[i] / std::sqrt(len2);
     }
     rays.push_back(r);
@@ -91,9 +98,17 @@ std::vector<BenchRay> make_surface_rays() {
 }
 
 const std::vector<BenchRay>& surface_rays() {
-  static const std::vector<BenchRay> surface = make_surface_rays();
+  static const std::vector<BenchRay> surface = make_surface_rays(true);
   return surface;
 }
+
+const std::vector<BenchRay>& inside_rays() {
+  static const std::vector<BenchRay> inside = make_surface_rays(false);
+  return inside;
+}
+
+// Which rays a window query asks about.
+enum class From { Afar, Surface, Inside };
 
 const std::vector<BenchRay>& rays(bool hits_only) {
   static const std::vector<BenchRay> mixed = make_rays(false), hits = make_rays(true);
@@ -112,8 +127,12 @@ void BM_AllRoots(benchmark::State& state, toroid::TorusSolver solver, bool hits_
   state.SetItemsProcessed(state.iterations());
 }
 
-void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver, bool from_surface) {
-  const auto& rs = from_surface ? surface_rays() : rays(false);
+const std::vector<BenchRay>& rays_from(From from) {
+  return from == From::Surface ? surface_rays() : from == From::Inside ? inside_rays() : rays(false);
+}
+
+void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver, From from) {
+  const auto& rs = rays_from(from);
   size_t i = 0;
   double t = 0;
   for (auto _ : state) {
@@ -125,8 +144,8 @@ void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver, bool from_s
   state.SetItemsProcessed(state.iterations());
 }
 
-void BM_Blocks(benchmark::State& state, toroid::TorusSolver solver, bool from_surface) {
-  const auto& rs = from_surface ? surface_rays() : rays(false);
+void BM_Blocks(benchmark::State& state, toroid::TorusSolver solver, From from) {
+  const auto& rs = rays_from(from);
   size_t i = 0;
   for (auto _ : state) {
     const BenchRay& r = rs[i++ & (rs.size() - 1)];
@@ -170,15 +189,17 @@ TOROID_BENCH(BM_AllRoots, tianheng_mixed, TorusSolver::Tianheng, false);
 TOROID_BENCH(BM_AllRoots, default_hits, TorusSolver::Default, true);
 TOROID_BENCH(BM_AllRoots, ferrari_hits, TorusSolver::Ferrari, true);
 TOROID_BENCH(BM_AllRoots, tianheng_hits, TorusSolver::Tianheng, true);
-TOROID_BENCH(BM_Nearest, default_mixed, TorusSolver::Default, false);
-TOROID_BENCH(BM_Nearest, ferrari_mixed, TorusSolver::Ferrari, false);
-TOROID_BENCH(BM_Nearest, tianheng_mixed, TorusSolver::Tianheng, false);
-TOROID_BENCH(BM_Nearest, default_surface, TorusSolver::Default, true);
-TOROID_BENCH(BM_Nearest, ferrari_surface, TorusSolver::Ferrari, true);
-TOROID_BENCH(BM_Blocks, default_mixed, TorusSolver::Default, false);
-TOROID_BENCH(BM_Blocks, ferrari_mixed, TorusSolver::Ferrari, false);
-TOROID_BENCH(BM_Blocks, default_surface, TorusSolver::Default, true);
-TOROID_BENCH(BM_Blocks, ferrari_surface, TorusSolver::Ferrari, true);
+TOROID_BENCH(BM_Nearest, default_mixed, TorusSolver::Default, From::Afar);
+TOROID_BENCH(BM_Nearest, ferrari_mixed, TorusSolver::Ferrari, From::Afar);
+TOROID_BENCH(BM_Nearest, tianheng_mixed, TorusSolver::Tianheng, From::Afar);
+TOROID_BENCH(BM_Nearest, default_surface, TorusSolver::Default, From::Surface);
+TOROID_BENCH(BM_Nearest, ferrari_surface, TorusSolver::Ferrari, From::Surface);
+TOROID_BENCH(BM_Nearest, default_inside, TorusSolver::Default, From::Inside);
+TOROID_BENCH(BM_Nearest, ferrari_inside, TorusSolver::Ferrari, From::Inside);
+TOROID_BENCH(BM_Blocks, default_mixed, TorusSolver::Default, From::Afar);
+TOROID_BENCH(BM_Blocks, ferrari_mixed, TorusSolver::Ferrari, From::Afar);
+TOROID_BENCH(BM_Blocks, default_surface, TorusSolver::Default, From::Surface);
+TOROID_BENCH(BM_Blocks, ferrari_surface, TorusSolver::Ferrari, From::Surface);
 TOROID_BENCH(BM_Batch, scalar_mixed, BatchPath::Scalar, false);
 TOROID_BENCH(BM_Batch, avx2_mixed, BatchPath::Avx2, false);
 TOROID_BENCH(BM_Batch, avx512_mixed, BatchPath::Avx512, false);

@@ -117,7 +117,8 @@ TEST(ShadowQuery, AgreesWithTheNearestRootOnEveryFamily) {
 // it is a t value, so the search goes on past it. The answer is the list's
 // first root after the start, bit for bit, on every ray of every family,
 // for windows that start before, at and after each root (just beyond its
-// rounding, and 1e-6 of it beyond) and end at infinity.
+// rounding, and 1e-6 of it beyond: inside the tube, as a refracted ray
+// starts), halfway between two roots, and end at infinity.
 TEST(NearestQuery, IsTheListsFirstRootAfterTheWindowsStart) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   int compared = 0, found = 0;
@@ -126,6 +127,7 @@ TEST(NearestQuery, IsTheListsFirstRootAfterTheWindowsStart) {
     for (int i = 0; i < n; ++i)
       for (const double k : {1 - 1e-9, 1.0, 1 + 1e-9, 1 + 1e-6})
         starts.push_back(all[i] * k + (all[i] == 0 ? k - 1 : 0));
+    for (int i = 0; i + 1 < n; ++i) starts.push_back(0.5 * (all[i] + all[i + 1]));
     for (const double lo : starts) {
       const double* first = std::find_if(all, all + n, [lo](double t) { return t > lo; });
       double t = 0;
