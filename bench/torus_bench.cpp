@@ -107,12 +107,16 @@ const std::vector<BenchRay>& inside_rays() {
   return inside;
 }
 
-// Which rays a window query asks about.
-enum class From { Afar, Surface, Inside };
-
 const std::vector<BenchRay>& rays(bool hits_only) {
   static const std::vector<BenchRay> mixed = make_rays(false), hits = make_rays(true);
   return hits_only ? hits : mixed;
+}
+
+// Which rays a window query asks about.
+enum class From { Afar, Surface, Inside };
+
+const std::vector<BenchRay>& rays_from(From from) {
+  return from == From::Surface ? surface_rays() : from == From::Inside ? inside_rays() : rays(false);
 }
 
 void BM_AllRoots(benchmark::State& state, toroid::TorusSolver solver, bool hits_only) {
@@ -125,10 +129,6 @@ void BM_AllRoots(benchmark::State& state, toroid::TorusSolver solver, bool hits_
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations());
-}
-
-const std::vector<BenchRay>& rays_from(From from) {
-  return from == From::Surface ? surface_rays() : from == From::Inside ? inside_rays() : rays(false);
 }
 
 void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver, From from) {
