@@ -185,9 +185,12 @@ struct Window {
   double s_min, s_max;
   double t_shift;
   CallerWindow caller;
+  TOROID_HD double caller_t(double s) const {
+    const double t = t_shift + s;
+    return caller.exponent != 0 ? std::scalbn(t, caller.exponent) : t;
+  }
   TOROID_HD bool holds(double s) const {
-    double t = t_shift + s;
-    if (caller.exponent != 0) t = std::scalbn(t, caller.exponent);
+    const double t = caller_t(s);
     return t > caller.t_min && t < caller.t_max;
   }
 };
@@ -215,6 +218,9 @@ class RootCollector {
   // Whether a piece's answer hung on a near-tangent minimum, whose sign can
   // depend on the bracket it was searched on.
   TOROID_HD bool met_near_tangent() const { return met_near_tangent_; }
+  // The root of h on (a.s, b.s), where h < 0 at a, h > 0 at b and h is
+  // convex: Halley's iteration from b (Fourier's condition), bracketed.
+  TOROID_HD double rising_root(const Sample& a, const Sample& b) { return root(a, b, b, true, false); }
 
   // Roots on the piece [a.s, b.s). A zero exactly at b.s counts only if `last`.
   // With `locate` false only whether there are roots matters (shadow rays):
@@ -490,20 +496,22 @@ TOROID_HD bool nears_axis_passage(const TorusFactor& f, double s_axis, double ax
   return probe.count() == 0 && !probe.met_near_tangent();
 }
 
-// Roots of one factor inside the ball |p| <= radius, in the shifted frame,
-// ascending, restricted to the window. Pieces wholly outside (s_min, s_max)
-// are skipped; see Search.
-TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3], double radius,
-                           const Window& window, Search search, double* out) {
-  const double s_min = window.s_min, s_max = window.s_max;
+// The part of the ray, in the shifted frame, inside the ball |p| <= radius
+// and the slab |z| <= r, each inflated so that rounding never clips a root
+// at its edge; empty (hi < lo) where the ray misses either.
+struct Chord {
+  double lo, hi;
+};
+
+TOROID_HD Chord chord_of(const TorusFactor& f, const DoubleDouble o[3], const double d[3], double radius) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
   // Ball: dd s^2 + 2 b s + (|o|^2 - radius^2) = 0. The origin is the ray's
   // point nearest the centre, so b is ~0 and the chord is well conditioned.
   const double b = o[0].hi * d[0] + o[1].hi * d[1] + o[2].hi * d[2];
   const double oo = o[0].hi * o[0].hi + o[1].hi * o[1].hi + o[2].hi * o[2].hi;
-  // Inflate a little so that rounding never clips a root at the ball's edge.
   const double rad = radius * (1 + 1e-9) + 1e-300;
   const double disc = b * b - f.dd() * (oo - rad * rad);
-  if (disc < 0) return 0;
+  if (disc < 0) return {kInf, -kInf};
   const double w = std::sqrt(disc);
   double lo = (-b - w) / f.dd();
   double hi = (-b + w) / f.dd();
@@ -519,9 +527,72 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
     lo = std::max(lo, z_lo);
     hi = std::min(hi, z_hi);
   } else if (std::abs(zo) > slab) {
-    return 0;
+    return {kInf, -kInf};
   }
+  return {lo, hi};
+}
+
+// The first root in the window of a ring torus's ray whose window starts
+// inside the tube (a ray refracted into it, or reflected inside it), located
+// from the start rather than from the pieces' ends: the tube is convex along
+// the ray up to the chord's end, so h < 0 at the start and h > 0 at the
+// chord's end bracket a single root, which Halley's iteration finds from the
+// end. It is the root the list holds to the solver's tolerance, not always
+// bit for bit (the list brackets it from the other side of the pair).
+// Returns 1 with the root in *out, 0 when it lies beyond the window, and -1
+// where the shortcut does not apply: a start outside the tube or within
+// rounding of its surface (a caller walking the list from a root), h_out
+// not convex beyond the start (the ray turns towards the axis), or a root
+// so near the window's end that the list's root could lie on its other side.
+[[gnu::noinline]] TOROID_HD int exit_from_inside(const TorusFactor& f, const DoubleDouble o[3], const double d[3],
+                                                 double hi, const Window& window, double* out) {
+  const double R = f.major(), r = f.minor(), s_min = window.s_min;
+  const Sample start = f.sample(s_min);
+  // Beyond the rounding two_or_none trusts: inside.
+  if (!(start.h < -1e-6 * r * r)) return -1;
+  // h_out'' = 2 |d|^2 - 2 R K / rho^3 >= 0 where rho^3 >= R K / |d|^2: on
+  // [s_min, hi] at rho's least there (at the passage by the axis, if it lies
+  // inside, else at an end), compared in sixth powers, with a margin far
+  // above their rounding.
+  const double c = f.c(), K = f.K();
+  const auto rho2_at = [&](double s) {
+    const double x = o[0].hi + (s * d[0] + o[0].lo), y = o[1].hi + (s * d[1] + o[1].lo);
+    return x * x + y * y;
+  };
+  const double s_axis = c > 0 ? -(o[0].hi * d[0] + o[1].hi * d[1]) / c : s_min;
+  const double rho2 = s_axis > s_min && s_axis < hi ? K / c : std::min(rho2_at(s_min), rho2_at(hi));
+  const double rho_i3 = R * K / f.dd();
+  if (!(rho2 * rho2 * rho2 > 1.01 * rho_i3 * rho_i3)) return -1;
+  const Sample end = f.sample(hi);
+  if (!(end.h > 0)) return -1;
+  RootCollector collector(f, out, r / std::sqrt(f.dd()), true, window);
+  const double x = collector.rising_root(start, end);
+  // The list's root lies within the solver's tolerance of x (a few eps of
+  // r / |d|, and of t): decide on x only where a margin far above that,
+  // 1e-6 r / |d|, leaves the answer the same.
+  const double margin = 1e-6 * r / std::sqrt(f.dd()) + 8 * kEps * (std::abs(x) + std::abs(window.t_shift));
+  if (window.holds(x - margin) && window.holds(x + margin)) {
+    *out = x;
+    return 1;
+  }
+  return window.caller_t(x - margin) >= window.caller.t_max ? 0 : -1;
+}
+
+// Roots of one factor inside the ball |p| <= radius, in the shifted frame,
+// ascending, restricted to the window. Pieces wholly outside (s_min, s_max)
+// are skipped; see Search.
+TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const double d[3], double radius,
+                           const Window& window, Search search, double* out) {
+  const double s_min = window.s_min, s_max = window.s_max;
+  const Chord chord = chord_of(f, o, d, radius);
+  const double lo = chord.lo, hi = chord.hi;
   if (hi < lo || hi < s_min || lo > s_max) return 0;
+  // A window that starts inside the chord of a ring torus's tube may start
+  // inside the tube (a ray refracted into it).
+  if (search == Search::First && f.is_outer() && f.minor() < f.major() && lo < s_min) {
+    const int exit = exit_from_inside(f, o, d, hi, window, out);
+    if (exit >= 0) return exit;
+  }
   if (f.is_outer()) {
     // The part of the chord inside the window lies in a ring torus's hole
     // (hole.h): no root there.
@@ -558,8 +629,10 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       const double rho_i3 = f.major() * f.K() / f.dd(), rho_min2 = f.K() / f.c();
       // For a ray that passes within ~1e-50 torus sizes of the axis the
       // square and the cube underflow: then the roots themselves decide.
+      // Within ~1e-160 both roots underflow to 0 too: that is a passage
+      // within rho's rounding of the axis, cut as a kink below.
       const double square = rho_i3 * rho_i3;
-      if (square > rho_min2 * rho_min2 * rho_min2 || (square < 0x1p-1000 && cube_root(rho_i3) > std::sqrt(rho_min2))) {
+      if (square > rho_min2 * rho_min2 * rho_min2 || (square < 0x1p-1000 && cube_root(rho_i3) >= std::sqrt(rho_min2))) {
         const double rho_i = cube_root(rho_i3);
         if (rho_i > blur) {
           const double hw = std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c());
@@ -663,7 +736,6 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
   }
   double s_out[4], s_in[4];
   const TorusFactor outer(ray.o, d, R, r, -1.0);
-  // With the lemon's roots to merge, the outer sheet's are all needed.
   int n_out = factor_roots(outer, ray.o, d, R + r, window, r < R ? search : Search::All, s_out);
   int n_in = 0;
   if (r >= R) {

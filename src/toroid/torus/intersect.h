@@ -42,9 +42,12 @@ TOROID_HD int intersect_torus(double major, double minor, const double origin[3]
 
 // The nearest root in the open interval (t_min, t_max), as a renderer needs
 // it; same accuracy as intersect_torus, with an early exit. Returns false and
-// leaves *t unchanged when there is none. With t_min a root this returned
-// (or intersect_torus listed), it is the next root: the roots of a ray can be
-// walked one call at a time.
+// leaves *t unchanged when there is none. It is intersect_torus's first root
+// in the interval, bit for bit, except where t_min lies inside the tube (a
+// ray refracted into it): that root is found from t_min, within the
+// solver's accuracy of the list's, and whether there is one is the list's
+// answer. With t_min a root this returned (or intersect_torus listed), it is
+// the next root: the roots of a ray can be walked one call at a time.
 TOROID_HD bool intersect_torus_nearest(double major, double minor, const double origin[3], const double direction[3],
                                        double t_min, double t_max, double* t,
                                        TorusSolver solver = TorusSolver::Default);

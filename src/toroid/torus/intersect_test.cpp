@@ -102,6 +102,21 @@ TEST(TorusIntersect, ARayGrazingTheAxisHasNoRootAtTheCentre) {
   }
 }
 
+// A ray along x through the tube, 1e-162 from the axis, with |d| = 1000:
+// K / c and R K / |d|^2 (rho_min^2 and rho_i^3) both underflow to 0 while K
+// does not. The passage is a kink of rho, as for K = 0; the list dropped the
+// two roots beyond the axis (an input of fuzz/corpus/intersect, R ~ 1e21,
+// showed it once the nearest-root query from inside the tube found them).
+TEST(TorusIntersect, ARayWhoseConcaveTestUnderflowsKeepsItsRoots) {
+  for (const double offset : {1e-162, 3e-162, 1e-170}) {
+    SCOPED_TRACE(offset);
+    const Roots x = roots(1, 0.25, {1, offset, 0}, {1000, 0, 0});
+    ASSERT_EQ(x.n, 4);
+    const double want[4] = {-2.25e-3, -1.75e-3, -0.25e-3, 0.25e-3};
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(x.t[i], want[i], 1e-18) << i;
+  }
+}
+
 // A ray that passes the axis far from its point nearest the centre: there
 // rho is as small as its rounding, and h_out's concave stretch beside the
 // axis is narrower than the samples resolve. Its roots are those of the ray
