@@ -136,6 +136,14 @@ class TorusFactor {
     return {s, h, 2.0 * (a * drho + p[2] * d_[2]), 2.0 * dd_ + k, -3.0 * k * drho * inv_rho};
   }
 
+  // h alone at s, as sample() computes it.
+  TOROID_HD double value(double s) const {
+    double p[3];
+    for (int i = 0; i < 3; ++i) p[i] = o_hi_[i] + (s * d_[i] + o_lo_[i]);
+    const double a = std::sqrt(p[0] * p[0] + p[1] * p[1]) + sign_ * R_;
+    return (a - r_) * (a + r_) + p[2] * p[2];
+  }
+
   // h at s in double-double arithmetic: used where double rounding would
   // decide the answer (near-tangent rays, whose two roots are ill-conditioned).
   TOROID_HD double eval_precise(double s) const {
@@ -578,6 +586,42 @@ TOROID_HD Chord chord_of(const TorusFactor& f, const DoubleDouble o[3], const do
   return window.caller_t(x - margin) >= window.caller.t_max ? 0 : -1;
 }
 
+// Whether a shadow ray's window certainly holds a root of a ring torus
+// (search Any), found before any cut or sample of the pieces: a point p of
+// the window deep inside the tube (h_out(p) < -r^2/64, at least r/128 from
+// the surface) and the window's end well outside it (h_out > r^2/64) hold a
+// root between them, at least r / (128 |d|) from each, far beyond the
+// solver's tolerance and the rounding of t (guarded), so the search would
+// report it inside the window: the answer is the same, only cheaper. The
+// candidates for p are where the ray crosses the torus's plane and the
+// cylinder rho = R (where a ray through the tube usually is deepest);
+// *stand_in is p, the window's point that stands for the root.
+TOROID_HD bool window_certainly_blocked(const TorusFactor& f, const DoubleDouble o[3], const double d[3],
+                                        const Window& window, double* stand_in) {
+  const double R = f.major(), r = f.minor();
+  if (!(r > 0x1p-16 * (R + r))) return false;  // h's rounding is then far below r^2/64
+  const double deep = r * r / 64;
+  const double margin = r / (128 * std::sqrt(f.dd()));
+  if (!(margin > 0x1p-40 * (std::abs(window.t_shift) + 2 * std::abs(window.s_max)))) return false;
+  double candidates[3];
+  int n = 0;
+  if (d[2] != 0) candidates[n++] = -(o[2].hi + o[2].lo) / d[2];
+  // rho^2 = R^2: c s^2 + 2 b s + |o_xy|^2 - R^2 = 0.
+  const double c = f.c(), b = o[0].hi * d[0] + o[1].hi * d[1];
+  const double disc = b * b - c * (o[0].hi * o[0].hi + o[1].hi * o[1].hi - R * R);
+  if (c > 0 && disc >= 0) {
+    const double w = std::sqrt(disc);
+    candidates[n++] = (-b - w) / c;
+    candidates[n++] = (-b + w) / c;
+  }
+  for (int i = 0; i < n; ++i)
+    if (f.value(candidates[i]) < -deep && window.holds(candidates[i])) {
+      *stand_in = candidates[i];
+      return f.value(window.s_max) > deep;
+    }
+  return false;
+}
+
 // Roots of one factor inside the ball |p| <= radius, in the shifted frame,
 // ascending, restricted to the window. Pieces wholly outside (s_min, s_max)
 // are skipped; see Search.
@@ -587,6 +631,9 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   const Chord chord = chord_of(f, o, d, radius);
   const double lo = chord.lo, hi = chord.hi;
   if (hi < lo || hi < s_min || lo > s_max) return 0;
+  if (search == Search::Any && f.is_outer() && f.minor() < f.major() && std::isfinite(s_max) &&
+      window_certainly_blocked(f, o, d, window, out))
+    return 1;
   // A window that starts inside the chord of a ring torus's tube may start
   // inside the tube (a ray refracted into it).
   if (search == Search::First && f.is_outer() && f.minor() < f.major() && lo < s_min) {
