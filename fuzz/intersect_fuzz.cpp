@@ -91,17 +91,18 @@ void check_blocks_agrees_with_nearest(double R, double r, const double o[3], con
     }
 }
 
-// The window queries' hull test (hull.h) passes no ray that meets the
-// torus after its start: checked from the origin and from beside each root
-// and between roots, against the list (the all-roots call does not use the
-// test). A root within the roots' rounding of the start is not decided.
+// The window queries' hull tests (hull.h: leaving the convex hull, or
+// leaving through the hole) pass no ray that meets the torus after its start: checked from the origin and from beside
+// each root and between roots, against the list (the all-roots call does not use the test). A root within the roots'
+// rounding of the start is not decided.
 void check_hull_test_passes_no_meeting_ray(double R, double r, const double o[3], const double d[3], const double t[4],
                                            int count) {
   const RootRounding rounding(R, r, o, d);
   double starts[12];
   const int n = ends_beside_roots(rounding, t, count, starts);
   for (int i = 0; i < n; ++i) {
-    if (!toroid::ray_leaves_hull(R, r, o, d, starts[i])) continue;
+    if (!toroid::ray_leaves_hull(R, r, o, d, starts[i]) && !toroid::ray_leaves_through_hole(R, r, o, d, starts[i]))
+      continue;
     for (int j = 0; j < count; ++j)
       if (t[j] > starts[i] + rounding(t[j])) {
         std::fprintf(stderr, "from %.17g the hull test passes the ray, which meets the torus at %.17g\n", starts[i],

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// ray_leaves_hull (hull.h), the window queries' shortcut for rays that leave
-// the torus's convex hull: it must never pass a ray that meets the torus
-// after its start (the all-roots call, which does not use it, is the
-// judge), and it must pass the rays it is for.
+// ray_leaves_hull and ray_leaves_through_hole (hull.h), the window queries'
+// shortcuts for rays that leave the torus's convex hull or its hole: they
+// must never pass a ray that meets the torus after its start (the all-roots
+// call, which does not use them, is the judge), and they must pass the rays
+// they are for.
 #include "toroid/torus/hull.h"
 
 #include <gtest/gtest.h>
@@ -142,6 +143,74 @@ TEST(TorusHull, ARayBeyondTheSlabPassesOnlyWhileMovingAwayFromIt) {
       EXPECT_TRUE(meets_after(t, o, down, 0));  // down onto the tube (nearer the axis: the hole)
     }
   }
+}
+
+TEST(TorusHole, RaysLeavingTheInnerHalfUpwardsThroughTheHolePassAndMeetNothing) {
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> angle(0, 2 * M_PI), inner(M_PI / 2, 3 * M_PI / 2);
+  for (const Torus& t : kTori) {
+    SCOPED_TRACE(testing::Message() << "R " << t.R << " r " << t.r);
+    int passed = 0;
+    constexpr int kRays = 4000;
+    for (int i = 0; i < kRays; ++i) {
+      const SurfaceRay s = surface_ray(t, angle(rng), inner(rng), 1e-5 * (t.R + t.r), rng);
+      if (!ray_leaves_through_hole(t.R, t.r, s.o, s.d, 0)) continue;
+      ++passed;
+      ASSERT_FALSE(meets_after(t, s.o, s.d, 0)) << "ray " << i;
+      double nearest;
+      EXPECT_FALSE(intersect_torus_nearest(t.R, t.r, s.o, s.d, 0, kInf, &nearest));
+      EXPECT_FALSE(torus_blocks(t.R, t.r, s.o, s.d, 0, kInf));
+    }
+    // Rays from the inner half in random outward directions: about a third
+    // leave through the hole nearer the axis (the others cross it).
+    EXPECT_GT(passed, kRays / 10);
+  }
+}
+
+TEST(TorusHole, RaysThatMeetTheTorusAfterTheirStartNeverPass) {
+  // Rays from random points of the slab within rho < R (the hole, the tube's
+  // inner half and inside it), in random directions: whatever the test
+  // says, a ray it passes has no root after its start.
+  std::mt19937_64 rng(22);
+  std::uniform_real_distribution<double> angle(0, 2 * M_PI), u(-1, 1), unit(0, 1);
+  for (const Torus& t : kTori) {
+    SCOPED_TRACE(testing::Message() << "R " << t.R << " r " << t.r);
+    int passed = 0, meeting = 0;
+    for (int i = 0; i < 50000; ++i) {
+      const double theta = angle(rng), rho = t.R * std::sqrt(unit(rng));
+      const double o[3] = {rho * std::cos(theta), rho * std::sin(theta), t.r * u(rng)};
+      const double d[3] = {u(rng), u(rng), u(rng)};
+      const bool meets = meets_after(t, o, d, 0);
+      meeting += meets;
+      if (ray_leaves_through_hole(t.R, t.r, o, d, 0)) {
+        ++passed;
+        ASSERT_FALSE(meets) << "ray " << i;
+      }
+    }
+    // Both kinds occur on every torus, so the assertion above is a real test.
+    EXPECT_GT(passed, 500);
+    EXPECT_GT(meeting, 200);
+  }
+}
+
+TEST(TorusHole, OnlyRingToriAndStartsOutsideTheTubeMovingOutOfTheSlabNearerTheAxis) {
+  const Torus t{1, 0.25};
+  // From the hole's side of the tube, at z = 0.1, rising steeply towards the axis: passes.
+  const double o[3] = {0.75 - 1e-3, 0, 0.1}, up[3] = {-0.1, 0.05, 1};
+  EXPECT_TRUE(ray_leaves_through_hole(t.R, t.r, o, up, 0));
+  // Falling instead (|z| shrinks first), or level, or across the hole to its far side: not passed.
+  const double down[3] = {-0.1, 0.05, -1}, level[3] = {-1, 0, 0}, across[3] = {-1, 0, 0.05};
+  EXPECT_FALSE(ray_leaves_through_hole(t.R, t.r, o, down, 0));
+  EXPECT_FALSE(ray_leaves_through_hole(t.R, t.r, o, level, 0));
+  EXPECT_FALSE(ray_leaves_through_hole(t.R, t.r, o, across, 0));
+  // Inside the tube, or on its outer half: not passed.
+  const double in[3] = {0.8, 0, 0.1}, out[3] = {1.25 + 1e-3, 0, 0.1};
+  EXPECT_FALSE(ray_leaves_through_hole(t.R, t.r, in, up, 0));
+  EXPECT_FALSE(ray_leaves_through_hole(t.R, t.r, out, up, 0));
+  // A spindle or horn torus fills its hole: never passed.
+  EXPECT_FALSE(ray_leaves_through_hole(1, 1, o, up, 0));
+  EXPECT_FALSE(ray_leaves_through_hole(1, 1.5, o, up, 0));
+  EXPECT_FALSE(ray_leaves_through_hole(t.R, t.r, o, up, std::numeric_limits<double>::quiet_NaN()));
 }
 
 }  // namespace

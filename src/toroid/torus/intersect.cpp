@@ -556,8 +556,12 @@ TOROID_HD Chord chord_of(const TorusFactor& f, const DoubleDouble o[3], const do
                                                  double hi, const Window& window, double* out) {
   const double R = f.major(), r = f.minor(), s_min = window.s_min;
   const Sample start = f.sample(s_min);
-  // Beyond the rounding two_or_none trusts: inside.
-  if (!(start.h < -1e-6 * r * r)) return -1;
+  // Inside beyond the rounding two_or_none trusts, and beyond h's rounding
+  // at a start that is itself rounded (s_min = t_min - t_shift, to eps of
+  // |t|: a caller walking a far ray's list from a root starts on the
+  // surface only to that).
+  const double reach = R + r + (std::abs(window.t_shift) + std::abs(s_min)) * std::sqrt(f.dd());
+  if (!(start.h < -std::max(1e-6 * r * r, 0x1p-40 * r * reach))) return -1;
   // h_out'' = 2 |d|^2 - 2 R K / rho^3 >= 0 where rho^3 >= R K / |d|^2: on
   // [s_min, hi] at rho's least there (at the passage by the axis, if it lies
   // inside, else at an end), compared in sixth powers, with a margin far
@@ -778,7 +782,8 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
   // nearest the centre can: rays aimed at the torus from afar skip the test.
   if (search != Search::All) {
     const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    if ((window.s_min >= 0 || window.s_min * window.s_min * dd < R * R) && ray_leaves_hull(R, r, origin, d, t_min))
+    if ((window.s_min >= 0 || window.s_min * window.s_min * dd < R * R) &&
+        (ray_leaves_hull(R, r, origin, d, t_min) || ray_leaves_through_hole(R, r, origin, d, t_min)))
       return 0;
   }
   double s_out[4], s_in[4];
