@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 
@@ -54,23 +55,32 @@ bool meets_after(const Torus& t, const double o[3], const double d[3], double t_
   return false;
 }
 
+// Of `rays` rays from 1e-5 torus sizes off the tube (a renderer's over-
+// point) at tube angles phi in [phi_lo, phi_hi], outwards: how many `passes`
+// passes, each checked to meet nothing after its start (fatal otherwise).
+template <typename Passes>
+int surface_rays_passed(const Torus& t, double phi_lo, double phi_hi, int rays, std::uint64_t seed, Passes passes) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> angle(0, 2 * M_PI), phi(phi_lo, phi_hi);
+  int passed = 0;
+  for (int i = 0; i < rays; ++i) {
+    const SurfaceRay s = surface_ray(t, angle(rng), phi(rng), 1e-5 * (t.R + t.r), rng);
+    if (!passes(s)) continue;
+    ++passed;
+    EXPECT_FALSE(meets_after(t, s.o, s.d, 0)) << "ray " << i;
+    double nearest;
+    EXPECT_FALSE(intersect_torus_nearest(t.R, t.r, s.o, s.d, 0, kInf, &nearest));
+    EXPECT_FALSE(torus_blocks(t.R, t.r, s.o, s.d, 0, kInf));
+  }
+  return passed;
+}
+
 TEST(TorusHull, RaysLeavingTheOuterHalfOfTheTubePassAndMeetNothing) {
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> angle(0, 2 * M_PI), outer(-M_PI / 2, M_PI / 2);
   for (const Torus& t : kTori) {
     SCOPED_TRACE(testing::Message() << "R " << t.R << " r " << t.r);
-    int passed = 0;
     constexpr int kRays = 2000;
-    for (int i = 0; i < kRays; ++i) {
-      // 1e-5 torus sizes off it, as a renderer's over-point.
-      const SurfaceRay s = surface_ray(t, angle(rng), outer(rng), 1e-5 * (t.R + t.r), rng);
-      if (!ray_leaves_hull(t.R, t.r, s.o, s.d, 0)) continue;
-      ++passed;
-      ASSERT_FALSE(meets_after(t, s.o, s.d, 0)) << "ray " << i;
-      double nearest;
-      EXPECT_FALSE(intersect_torus_nearest(t.R, t.r, s.o, s.d, 0, kInf, &nearest));
-      EXPECT_FALSE(torus_blocks(t.R, t.r, s.o, s.d, 0, kInf));
-    }
+    const int passed = surface_rays_passed(t, -M_PI / 2, M_PI / 2, kRays, 11,
+                                           [&](const SurfaceRay& s) { return ray_leaves_hull(t.R, t.r, s.o, s.d, 0); });
     // All but the rays that leave nearly along the surface.
     EXPECT_GT(passed, 0.97 * kRays);
   }
@@ -146,23 +156,14 @@ TEST(TorusHull, ARayBeyondTheSlabPassesOnlyWhileMovingAwayFromIt) {
 }
 
 TEST(TorusHole, RaysLeavingTheInnerHalfUpwardsThroughTheHolePassAndMeetNothing) {
-  std::mt19937_64 rng(21);
-  std::uniform_real_distribution<double> angle(0, 2 * M_PI), inner(M_PI / 2, 3 * M_PI / 2);
   for (const Torus& t : kTori) {
     SCOPED_TRACE(testing::Message() << "R " << t.R << " r " << t.r);
-    int passed = 0;
     constexpr int kRays = 4000;
-    for (int i = 0; i < kRays; ++i) {
-      const SurfaceRay s = surface_ray(t, angle(rng), inner(rng), 1e-5 * (t.R + t.r), rng);
-      if (!ray_leaves_through_hole(t.R, t.r, s.o, s.d, 0)) continue;
-      ++passed;
-      ASSERT_FALSE(meets_after(t, s.o, s.d, 0)) << "ray " << i;
-      double nearest;
-      EXPECT_FALSE(intersect_torus_nearest(t.R, t.r, s.o, s.d, 0, kInf, &nearest));
-      EXPECT_FALSE(torus_blocks(t.R, t.r, s.o, s.d, 0, kInf));
-    }
-    // Rays from the inner half in random outward directions: about a third
-    // leave through the hole nearer the axis (the others cross it).
+    const int passed = surface_rays_passed(t, M_PI / 2, 3 * M_PI / 2, kRays, 21, [&](const SurfaceRay& s) {
+      return ray_leaves_through_hole(t.R, t.r, s.o, s.d, 0);
+    });
+    // Rays from the inner half in random outward directions: many leave
+    // through the hole nearer the axis (the others cross it).
     EXPECT_GT(passed, kRays / 10);
   }
 }
