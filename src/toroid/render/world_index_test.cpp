@@ -87,7 +87,12 @@ TEST(WorldIndex, ColorAtIsTheBooksWithTheWholeList) {
       rays.push_back({inside, normalize(vector(std::cos(3 * a), 0.5, std::sin(5 * a)))});
     }
   }
-  int leaving_glass = 0;
+  // The rays refracted into a glass tube ask for their exit from inside it,
+  // which the torus finds from the ray's start (intersect_torus_nearest):
+  // the list's root to the solver's accuracy, not always its bits, so a
+  // colour is the book's bit for bit or within the rounding that carries
+  // (1e-12 here; a wrong n1 or n2 moves it by more than 1e-3).
+  int leaving_glass = 0, same_bits = 0;
   for (const Ray& ray : rays) {
     Intersections xs;
     intersect_world(w, ray, xs);
@@ -95,12 +100,14 @@ TEST(WorldIndex, ColorAtIsTheBooksWithTheWholeList) {
     const Computations book_comps = h ? prepare_computations(*h, ray, xs) : Computations{};
     const Color book = h ? shade_hit(w, book_comps) : Color{0, 0, 0};
     const Color got = color_at(w, ray);
-    ASSERT_EQ(got.r, book.r);
-    ASSERT_EQ(got.g, book.g);
-    ASSERT_EQ(got.b, book.b);
+    ASSERT_NEAR(got.r, book.r, 1e-12);
+    ASSERT_NEAR(got.g, book.g, 1e-12);
+    ASSERT_NEAR(got.b, book.b, 1e-12);
+    same_bits += got.r == book.r && got.g == book.g && got.b == book.b;
     leaving_glass += h && book_comps.n1 > 1;
   }
   EXPECT_GT(leaving_glass, 50);
+  EXPECT_GT(same_bits, 0.9 * static_cast<double>(rays.size()));
 }
 
 TEST(WorldIndex, IsIgnoredOnceObjectsAreAdded) {
