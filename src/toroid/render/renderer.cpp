@@ -61,6 +61,9 @@ RenderStats render_tiles(const Camera& camera, const World& world, const RenderO
   double next_report = options.progress_interval_s;  // guarded by progress_mutex
   auto elapsed = [&] { return std::chrono::duration<double>(clock::now() - start).count(); };
 
+  // Camera rays start at one point: where what they start inside is known,
+  // they ask for the nearest hit, not the list up to it (world.h).
+  const EyeContainers eye(world, camera.ray_for_pixel(0, 0).origin);
   auto cancelled = [&] { return options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed); };
   auto render_tile = [&](int t, std::vector<Color>& pixels) {
     const PixelRect r = grid.rect(t);
@@ -76,7 +79,7 @@ RenderStats render_tiles(const Camera& camera, const World& world, const RenderO
           sample_offset(x, y, s, samples, dx, dy);
           const Ray ray = camera.ray_for_pixel(x, y, dx, dy);
           sum += path ? trace_path(world, ray, options.max_depth, path_seed(x, y, s))
-                      : color_at(world, ray, options.max_depth);
+                      : color_at(world, ray, options.max_depth, eye.for_ray(ray));
         }
         *out++ = samples == 1 ? sum : sum / static_cast<double>(samples);
       }

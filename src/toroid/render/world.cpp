@@ -7,6 +7,7 @@
 
 #include "toroid/math/transform.h"
 #include "toroid/render/lighting.h"
+#include "toroid/shapes/plane.h"
 #include "toroid/shapes/shape.h"
 #include "toroid/shapes/sphere.h"
 
@@ -241,6 +242,38 @@ Color shade_hit(const World& world, const Computations& comps, int remaining) {
 
 Color color_at(const World& world, const Ray& ray, int remaining) {
   return trace(world, ray, remaining, Containers::unknown());
+}
+
+Color color_at(const World& world, const Ray& ray, int remaining, const Containers& inside) {
+  return trace(world, ray, remaining, inside);
+}
+
+EyeContainers::EyeContainers(const World& world, const Tuple& eye) : eye_(eye) {
+  for (const auto& object : world.objects) {
+    if (dynamic_cast<const Plane*>(object.get()) != nullptr) {
+      planes_.push_back(object.get());
+      continue;
+    }
+    if (!carried_in_containers(*object)) return;
+    const BoundingBox box = object->parent_space_bounds();
+    const bool inside_box = eye.x >= box.min.x && eye.x <= box.max.x && eye.y >= box.min.y && eye.y <= box.max.y &&
+                            eye.z >= box.min.z && eye.z <= box.max.z;
+    if (inside_box || !(box.min.x <= box.max.x)) return;  // (an empty or NaN box: unsure)
+  }
+  outside_every_object_ = true;
+}
+
+Containers EyeContainers::for_ray(const Ray& ray) const {
+  if (!outside_every_object_ || ray.origin.x != eye_.x || ray.origin.y != eye_.y || ray.origin.z != eye_.z)
+    return Containers::unknown();
+  thread_local Intersections xs;
+  for (const Shape* plane : planes_) {
+    xs.clear();
+    plane->intersect(ray, xs);
+    for (const Intersection& x : xs)
+      if (!(x.t > 0)) return Containers::unknown();
+  }
+  return Containers{};
 }
 
 Color reflected_color(const World& world, const Computations& comps, int remaining) {

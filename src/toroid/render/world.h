@@ -93,6 +93,34 @@ std::uint64_t& rays_traced_on_this_thread();
 // The colour seen along `ray`: the environment's if it hits nothing.
 Color color_at(const World& world, const Ray& ray, int remaining = kDefaultRemaining);
 
+// color_at for a ray that starts inside `inside` (the book's containers list
+// at the ray's start) where that is known: such a ray asks for the nearest
+// hit instead of every intersection up to it, as the rays refracted into a
+// closed glass shape do. With Containers::unknown() it is color_at.
+Color color_at(const World& world, const Ray& ray, int remaining, const Containers& inside);
+
+// What the rays from one eye point start inside, where the book's containers
+// list at t = 0 is known without walking each ray's line: the eye lies
+// outside the box of every object and each is a closed surface that the
+// containers carry (carried_in_containers: a sphere, a cube, a capped
+// cylinder or cone, a whole or capped torus), so each ray's line crosses
+// each of them an even number of times behind the eye; planes, unbounded,
+// are asked per ray: a ray whose line meets one behind the eye starts
+// inside it in the book's walk, and is left unknown. Anything else in the
+// world (a group, CSG, triangles) leaves every ray unknown.
+class EyeContainers {
+ public:
+  EyeContainers(const World& world, const Tuple& eye);
+  // Inside nothing, or unknown, for a ray that starts at the eye (unknown
+  // for any other).
+  Containers for_ray(const Ray& ray) const;
+
+ private:
+  Tuple eye_;
+  bool outside_every_object_ = false;
+  std::vector<const Shape*> planes_;
+};
+
 // Colour arriving along the reflection of the eye ray; black when the
 // material is not reflective or remaining <= 0.
 Color reflected_color(const World& world, const Computations& comps, int remaining = kDefaultRemaining);

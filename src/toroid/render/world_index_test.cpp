@@ -11,6 +11,7 @@
 #include "toroid/render/camera.h"
 #include "toroid/render/computations.h"
 #include "toroid/render/world.h"
+#include "toroid/shapes/group.h"
 #include "toroid/shapes/plane.h"
 #include "toroid/shapes/sphere.h"
 #include "toroid/shapes/torus.h"
@@ -108,6 +109,75 @@ TEST(WorldIndex, ColorAtIsTheBooksWithTheWholeList) {
   }
   EXPECT_GT(leaving_glass, 50);
   EXPECT_GT(same_bits, 0.9 * static_cast<double>(rays.size()));
+}
+
+// Camera rays that start inside nothing (EyeContainers) ask for the nearest
+// hit: the colour is color_at's from the book's list, bit for bit.
+void expect_eye_rays_as_the_books(const World& w, const Tuple& eye, const Tuple& look_at, int want_known) {
+  Camera camera(48, 32, 1.0);
+  camera.set_transform(view_transform(eye, look_at, vector(0, 1, 0)));
+  const EyeContainers eye_containers(w, camera.ray_for_pixel(0, 0).origin);
+  int known = 0;
+  for (int y = 0; y < camera.vsize(); ++y)
+    for (int x = 0; x < camera.hsize(); ++x) {
+      const Ray ray = camera.ray_for_pixel(x, y);
+      const Containers inside = eye_containers.for_ray(ray);
+      known += inside.known();
+      const Color book = color_at(w, ray), got = color_at(w, ray, kDefaultRemaining, inside);
+      ASSERT_EQ(got.r, book.r) << x << "," << y;
+      ASSERT_EQ(got.g, book.g) << x << "," << y;
+      ASSERT_EQ(got.b, book.b) << x << "," << y;
+    }
+  if (want_known > 0) {
+    EXPECT_GE(known, want_known);
+  } else {
+    EXPECT_EQ(known, 0);
+  }
+}
+
+TEST(EyeContainers, CameraRaysFromOutsideEveryObjectSeeWhatTheBookSees) {
+  World w = torus_world(true);
+  index_objects(w);
+  // Looking down at the glass tori: most rays' lines meet the floor ahead
+  // (the top rows' rise, and meet it behind the eye).
+  expect_eye_rays_as_the_books(w, point(0, 2, -6), point(0, 0, 0.5), 1000);
+}
+
+TEST(EyeContainers, RaysWhoseLineMeetsAPlaneBehindTheEyeAreUnknown) {
+  // A floor of refractive index 1.3 below a glass sphere, seen from just
+  // above the floor looking up: in the book's walk the rays that rise start
+  // inside the floor, so a refracting hit's n1 is the floor's.
+  World w;
+  w.lights.push_back(PointLight{point(-10, 10, -10), Color{1, 1, 1}});
+  auto floor = std::make_shared<Plane>();
+  Material floor_material;
+  floor_material.refractive_index = 1.3;
+  floor->set_material(floor_material);
+  auto ball = std::make_shared<Sphere>();
+  ball->set_transform(translation(0, 1.5, 0));
+  Material glass;
+  glass.transparency = 0.9;
+  glass.reflective = 0.5;
+  glass.refractive_index = 1.5;
+  ball->set_material(glass);
+  w.objects = {floor, ball};
+  index_objects(w);
+  expect_eye_rays_as_the_books(w, point(0, 0.5, -5), point(0, 2, 0), 1);
+}
+
+TEST(EyeContainers, AnEyeInsideAnObjectsBoxOrAWorldWithOpenShapesLeavesEveryRayUnknown) {
+  World w = torus_world(true);
+  index_objects(w);
+  // Inside the box of a torus (in its hole).
+  expect_eye_rays_as_the_books(w, point(-2.5, 0, 1.5), point(0, 0, 5), 0);
+  // A group among the objects.
+  World grouped = torus_world(true);
+  auto group = std::make_shared<Group>();
+  group->add_child(std::make_shared<Sphere>());
+  group->set_transform(translation(0, 3, 3));
+  grouped.objects.push_back(group);
+  index_objects(grouped);
+  expect_eye_rays_as_the_books(grouped, point(0, 2, -6), point(0, 0, 0.5), 0);
 }
 
 TEST(WorldIndex, IsIgnoredOnceObjectsAreAdded) {
