@@ -671,7 +671,11 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       f.c() > 0 ? -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c() : std::numeric_limits<double>::quiet_NaN();
   const double blur = kAxisBlur * (std::abs(o[0].hi) + std::abs(o[1].hi));
   if (f.c() > 0) {
-    if (f.K() == 0) {
+    // K subnormal: the ray passes within ~1e-154 sizes of the axis, where
+    // R K / |d|^2 and K / c underflow (to 0 or to a few ulps of the
+    // smallest double), so the concave test below cannot be made: a kink,
+    // as for K = 0. (The batch sends such rays to this code.)
+    if (f.K() < std::numeric_limits<double>::min()) {
       if (s_axis > lo && s_axis < hi) axis_cut[ncut] = true, cuts[ncut++] = s_axis;
     } else if (f.is_outer()) {
       // h_out'' < 0 somewhere iff it is at the ray's point nearest the axis,
@@ -685,15 +689,20 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       const double square = rho_i3 * rho_i3;
       if (square > rho_min2 * rho_min2 * rho_min2 || (square < 0x1p-1000 && cube_root(rho_i3) >= std::sqrt(rho_min2))) {
         const double rho_i = cube_root(rho_i3);
-        if (rho_i > blur) {
-          const double hw = std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c());
+        const double hw = rho_i > blur ? std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c()) : 0.0;
+        // A half-width that underflows to 0 although rho_min is well below
+        // rho_i (a ray that passes the axis far closer than rho_i, at a
+        // large |d|) leaves a stretch narrower than any s between: a kink
+        // too. (The batch sends such rays to this code: their square
+        // underflows.)
+        if (rho_i > blur && !(hw == 0 && rho_min2 < 0.25 * rho_i * rho_i)) {
           concave_lo = s_axis - hw;
           concave_hi = s_axis + hw;
           if (concave_lo > lo && concave_lo < hi) cuts[ncut++] = concave_lo;
           if (concave_hi > lo && concave_hi < hi) cuts[ncut++] = concave_hi;
         } else if (s_axis > lo && s_axis < hi) {
           // The concave stretch is too narrow for rho's rounding (see
-          // kAxisBlur): the axis passage is cut as a kink.
+          // kAxisBlur), or for s's: the axis passage is cut as a kink.
           axis_cut[ncut] = true, cuts[ncut++] = s_axis;
         }
       }

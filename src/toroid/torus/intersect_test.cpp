@@ -117,6 +117,35 @@ TEST(TorusIntersect, ARayWhoseConcaveTestUnderflowsKeepsItsRoots) {
   }
 }
 
+// The fuzzer's ray (an input of fuzz/corpus/intersect): along y, |d| ~ 1e57,
+// through a nearly horn torus of size 3e-40 within 7e-198 of its axis.
+// Rescaled, rho_i is far above rho_min but the concave stretch's half-width
+// underflows to 0: the passage is cut as a kink; the list dropped the two
+// roots beyond the axis.
+TEST(TorusIntersect, ARayWhoseConcaveStretchUnderflowsKeepsItsRoots) {
+  const double R = 2.7227121453917246e-40, r = 2.7226278339608488e-40;
+  const Roots x = roots(R, r, {-6.6888822612257112e-198, 8.275809495493886e-313, 8.7623505883960522e-313},
+                        {2.7825777173779005e-320, -1.35914919392845e+57, -0.0});
+  ASSERT_EQ(x.n, 4);
+  const double speed = 1.35914919392845e+57;
+  const double want[4] = {-(R + r) / speed, -(R - r) / speed, (R - r) / speed, (R + r) / speed};
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(x.t[i], want[i], 1e-9 * std::abs(want[i])) << i;
+}
+
+// The fuzzer's ray through the centre of a tiny, nearly horn torus (size
+// 1e-153), 1e-162 of its size off the axis once rescaled: K is subnormal, and
+// R K / |d|^2 underflows to 0 while K / c does not. Cut as a kink, as for
+// K = 0; the list dropped the two roots beyond the axis.
+TEST(TorusIntersect, ARayWithASubnormalKKeepsItsRoots) {
+  const Roots x = roots(6.0134742846961391e-154, 6.0134700169990685e-154, {4.9928551262996198e-315, 0, 0},
+                        {-6.8356728929826799e-154, 4.8348331849788138e-154, -5.5313556424034503e-154});
+  ASSERT_EQ(x.n, 4);
+  EXPECT_NEAR(x.t[0], -1, 1e-12);
+  EXPECT_NEAR(x.t[3], 1, 1e-12);
+  EXPECT_NEAR(x.t[1], -x.t[2], 1e-18);
+  EXPECT_GT(x.t[2], 0);
+}
+
 // A ray that passes the axis far from its point nearest the centre: there
 // rho is as small as its rounding, and h_out's concave stretch beside the
 // axis is narrower than the samples resolve. Its roots are those of the ray
