@@ -671,11 +671,7 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       f.c() > 0 ? -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c() : std::numeric_limits<double>::quiet_NaN();
   const double blur = kAxisBlur * (std::abs(o[0].hi) + std::abs(o[1].hi));
   if (f.c() > 0) {
-    // K subnormal: the ray passes within ~1e-154 sizes of the axis, where
-    // R K / |d|^2 and K / c underflow (to 0 or to a few ulps of the
-    // smallest double), so the concave test below cannot be made: a kink,
-    // as for K = 0. (The batch sends such rays to this code.)
-    if (f.K() < std::numeric_limits<double>::min()) {
+    if (f.K() == 0) {
       if (s_axis > lo && s_axis < hi) axis_cut[ncut] = true, cuts[ncut++] = s_axis;
     } else if (f.is_outer()) {
       // h_out'' < 0 somewhere iff it is at the ray's point nearest the axis,
@@ -683,11 +679,18 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
       // cube root needed.
       const double rho_i3 = f.major() * f.K() / f.dd(), rho_min2 = f.K() / f.c();
       // For a ray that passes within ~1e-50 torus sizes of the axis the
-      // square and the cube underflow: then the roots themselves decide.
-      // Within ~1e-160 both roots underflow to 0 too: that is a passage
-      // within rho's rounding of the axis, cut as a kink below.
+      // square and the cube underflow: then the roots themselves decide, or,
+      // where a root underflows too (within ~1e-100 of the axis), the same
+      // test in exponents, R^2 c^3 > K |d|^4. A rho_i that underflows to 0
+      // is a passage within rho's rounding of the axis, cut as a kink below.
       const double square = rho_i3 * rho_i3;
-      if (square > rho_min2 * rho_min2 * rho_min2 || (square < 0x1p-1000 && cube_root(rho_i3) >= std::sqrt(rho_min2))) {
+      constexpr double kNormal = std::numeric_limits<double>::min();
+      const bool concave = square > rho_min2 * rho_min2 * rho_min2 ||
+                           (square < 0x1p-1000 && (rho_i3 >= kNormal && rho_min2 >= kNormal
+                                                       ? cube_root(rho_i3) > std::sqrt(rho_min2)
+                                                       : 2 * std::log2(f.major()) + 3 * std::log2(f.c()) >
+                                                             std::log2(f.K()) + 2 * std::log2(f.dd())));
+      if (concave) {
         const double rho_i = cube_root(rho_i3);
         const double hw = rho_i > blur ? std::sqrt(std::max(0.0, rho_i * rho_i - rho_min2) / f.c()) : 0.0;
         // A half-width that underflows to 0 although rho_min is well below

@@ -132,10 +132,11 @@ TEST(TorusIntersect, ARayWhoseConcaveStretchUnderflowsKeepsItsRoots) {
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(x.t[i], want[i], 1e-9 * std::abs(want[i])) << i;
 }
 
-// The fuzzer's ray through the centre of a tiny, nearly horn torus (size
-// 1e-153), 1e-162 of its size off the axis once rescaled: K is subnormal, and
-// R K / |d|^2 underflows to 0 while K / c does not. Cut as a kink, as for
-// K = 0; the list dropped the two roots beyond the axis.
+// The fuzzer's rays through the centre of tiny, nearly horn tori: R K / |d|^2
+// (rho_i^3) underflows to 0 while K / c (rho_min^2) does not, so the roots
+// cannot be compared; the test is made in exponents (R^2 c^3 > K |d|^4), and
+// rho_i = 0 is a kink. The list dropped the two roots beyond the axis.
+// Size 1e-153, 1e-162 of it off the axis once rescaled (K subnormal):
 TEST(TorusIntersect, ARayWithASubnormalKKeepsItsRoots) {
   const Roots x = roots(6.0134742846961391e-154, 6.0134700169990685e-154, {4.9928551262996198e-315, 0, 0},
                         {-6.8356728929826799e-154, 4.8348331849788138e-154, -5.5313556424034503e-154});
@@ -144,6 +145,16 @@ TEST(TorusIntersect, ARayWithASubnormalKKeepsItsRoots) {
   EXPECT_NEAR(x.t[3], 1, 1e-12);
   EXPECT_NEAR(x.t[1], -x.t[2], 1e-18);
   EXPECT_GT(x.t[2], 0);
+}
+
+// Size 2e-25 along |d| ~ 1e21, 6e-154 off the axis (K normal):
+TEST(TorusIntersect, ARayWhoseRhoICubedUnderflowsKeepsItsRoots) {
+  const double R = 8.6367387487154352e-26, r = 8.6358191609518039e-26, speed = 7.4770820838688988e+20;
+  const Roots x = roots(R, r, {6.2386826586862896e-154, 6.0134700224691388e-154, 6.0134700169990685e-154},
+                        {speed, 9.7330932230725569e-322, 3.7516131147708069e-307});
+  ASSERT_EQ(x.n, 4);
+  const double want[4] = {-(R + r) / speed, -(R - r) / speed, (R - r) / speed, (R + r) / speed};
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(x.t[i], want[i], 1e-9 * std::abs(want[i])) << i;
 }
 
 // A ray that passes the axis far from its point nearest the centre: there
