@@ -249,6 +249,8 @@ Color color_at(const World& world, const Ray& ray, int remaining, const Containe
 }
 
 EyeContainers::EyeContainers(const World& world, const Tuple& eye) : eye_(eye) {
+  // Without glass every ray asks for the nearest hit already (trace).
+  if (indexed(world) && !world.index.any_transparent()) return;
   for (const auto& object : world.objects) {
     if (dynamic_cast<const Plane*>(object.get()) != nullptr) {
       planes_.push_back(object.get());
@@ -256,9 +258,7 @@ EyeContainers::EyeContainers(const World& world, const Tuple& eye) : eye_(eye) {
     }
     if (!carried_in_containers(*object)) return;
     const BoundingBox box = object->parent_space_bounds();
-    const bool inside_box = eye.x >= box.min.x && eye.x <= box.max.x && eye.y >= box.min.y && eye.y <= box.max.y &&
-                            eye.z >= box.min.z && eye.z <= box.max.z;
-    if (inside_box || !(box.min.x <= box.max.x)) return;  // (an empty or NaN box: unsure)
+    if (box.contains_point(eye) || !(box.min.x <= box.max.x)) return;  // (an empty or NaN box: unsure)
   }
   outside_every_object_ = true;
 }

@@ -107,7 +107,8 @@ Color color_at(const World& world, const Ray& ray, int remaining, const Containe
 // each of them an even number of times behind the eye; planes, unbounded,
 // are asked per ray: a ray whose line meets one behind the eye starts
 // inside it in the book's walk, and is left unknown. Anything else in the
-// world (a group, CSG, triangles) leaves every ray unknown.
+// world (a group, CSG, triangles) leaves every ray unknown, and so does a
+// world without glass, whose rays ask for the nearest hit anyway.
 class EyeContainers {
  public:
   EyeContainers(const World& world, const Tuple& eye);

@@ -37,6 +37,17 @@ namespace toroid {
 // (within the margins, for a non-finite point at t_min, and for a torus size
 // or |d|^2 outside the range where the products below stay normal: the
 // solver's range, 2^-100..2^100 and 2^-400..2^400).
+// The scale of the numbers a hull test is made of (|origin|, |t_min d|,
+// R + r), or 0 where a torus size or |d|^2 lies outside the range where the
+// products below stay normal (the solver's range): the tests are then unsure.
+[[gnu::always_inline]] TOROID_HD inline double hull_test_scale(double major, double minor, const double origin[3],
+                                                               const double d[3], double dd, double t_min) {
+  const double size = major + minor;
+  if (!(size > 0x1p-100 && size < 0x1p100 && dd > 0x1p-400 && dd < 0x1p400)) return 0;
+  return std::abs(origin[0]) + std::abs(origin[1]) + std::abs(origin[2]) +
+         std::abs(t_min) * (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2])) + major + minor;
+}
+
 [[gnu::always_inline]] TOROID_HD inline bool ray_leaves_hull(double major, double minor, const double origin[3],
                                                              const double d[3], double t_min) {
   double q[3];
@@ -47,10 +58,8 @@ namespace toroid {
   const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   const double qd = (origin[0] * d[0] + origin[1] * d[1] + origin[2] * d[2]) + t_min * dd;
   if (qd < 0 && qd * qd >= major * major * dd) return false;
-  const double size = major + minor;
-  if (!(size > 0x1p-100 && size < 0x1p100 && dd > 0x1p-400 && dd < 0x1p400)) return false;
-  const double scale = std::abs(origin[0]) + std::abs(origin[1]) + std::abs(origin[2]) +
-                       std::abs(t_min) * (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2])) + major + minor;
+  const double scale = hull_test_scale(major, minor, origin, d, dd, t_min);
+  if (scale == 0) return false;
   const double margin = 0x1p-30 * scale;
   // Beyond a face of the slab, not turning back towards it.
   if (std::abs(q[2]) - minor > margin && (q[2] > 0 ? d[2] >= 0 : d[2] <= 0)) return true;
@@ -86,11 +95,8 @@ namespace toroid {
   if (!(minor < major) || d[2] == 0 || q[2] * d[2] < 0) return false;
   const double rho2 = q[0] * q[0] + q[1] * q[1];
   if (!(rho2 < major * major)) return false;
-  const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-  const double size = major + minor;
-  if (!(size > 0x1p-100 && size < 0x1p100 && dd > 0x1p-400 && dd < 0x1p400)) return false;
-  const double scale = std::abs(origin[0]) + std::abs(origin[1]) + std::abs(origin[2]) +
-                       std::abs(t_min) * (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2])) + major + minor;
+  const double scale = hull_test_scale(major, minor, origin, d, d[0] * d[0] + d[1] * d[1] + d[2] * d[2], t_min);
+  if (scale == 0) return false;
   const double a = major - std::sqrt(rho2);
   if (!(a * a + q[2] * q[2] - minor * minor > 0x1p-30 * scale * scale)) return false;
   // Where the ray meets the face it moves towards (at q already, if beyond it).

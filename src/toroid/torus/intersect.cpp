@@ -136,6 +136,12 @@ class TorusFactor {
     return {s, h, 2.0 * (a * drho + p[2] * d_[2]), 2.0 * dd_ + k, -3.0 * k * drho * inv_rho};
   }
 
+  // rho^2 at s, as sample() computes it.
+  TOROID_HD double rho2(double s) const {
+    const double x = o_hi_[0] + (s * d_[0] + o_lo_[0]), y = o_hi_[1] + (s * d_[1] + o_lo_[1]);
+    return x * x + y * y;
+  }
+
   // h alone at s, as sample() computes it.
   TOROID_HD double value(double s) const {
     double p[3];
@@ -567,12 +573,8 @@ TOROID_HD Chord chord_of(const TorusFactor& f, const DoubleDouble o[3], const do
   // inside, else at an end), compared in sixth powers, with a margin far
   // above their rounding.
   const double c = f.c(), K = f.K();
-  const auto rho2_at = [&](double s) {
-    const double x = o[0].hi + (s * d[0] + o[0].lo), y = o[1].hi + (s * d[1] + o[1].lo);
-    return x * x + y * y;
-  };
   const double s_axis = c > 0 ? -(o[0].hi * d[0] + o[1].hi * d[1]) / c : s_min;
-  const double rho2 = s_axis > s_min && s_axis < hi ? K / c : std::min(rho2_at(s_min), rho2_at(hi));
+  const double rho2 = s_axis > s_min && s_axis < hi ? K / c : std::min(f.rho2(s_min), f.rho2(hi));
   const double rho_i3 = R * K / f.dd();
   if (!(rho2 * rho2 * rho2 > 1.01 * rho_i3 * rho_i3)) return -1;
   const Sample end = f.sample(hi);
@@ -648,11 +650,7 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
     // The part of the chord inside the window lies in a ring torus's hole
     // (hole.h): no root there.
     const double limit = hole_limit(f.major(), f.minor());
-    const auto rho2_at = [&](double s) {
-      const double x = o[0].hi + (s * d[0] + o[0].lo), y = o[1].hi + (s * d[1] + o[1].lo);
-      return x * x + y * y;
-    };
-    if (rho2_at(std::max(lo, s_min)) < limit && rho2_at(std::min(hi, s_max)) < limit) return 0;
+    if (f.rho2(std::max(lo, s_min)) < limit && f.rho2(std::min(hi, s_max)) < limit) return 0;
   }
 
   // Breakpoints of convexity: the axis crossing when K = 0 (a kink of rho),
@@ -800,6 +798,7 @@ TOROID_HD bool in_solver_range(double R, double r, const double d[3]) {
   }
   double s_out[4], s_in[4];
   const TorusFactor outer(ray.o, d, R, r, -1.0);
+  // With the lemon's roots to merge, the outer sheet's are all needed.
   int n_out = factor_roots(outer, ray.o, d, R + r, window, r < R ? search : Search::All, s_out);
   int n_in = 0;
   if (r >= R) {
