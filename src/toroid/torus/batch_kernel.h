@@ -549,8 +549,9 @@ class BatchSolver {
     const VM settled = halley & (next_x == st.x);
     const VM inside = halley & (next_x > lo) & (next_x < hi);
     next_x = select(inside, next_x, splat(0.5) * (lo + hi));
-    const VD qv = v.d2h / (splat(2.0) * v.dh);
-    const VD cv = abs(qv * qv - v.d3h / (splat(6.0) * v.dh));
+    const VD inv_dh = splat(1.0) / v.dh;
+    const VD qv = splat(0.5) * (v.d2h * inv_dh);
+    const VD cv = abs(qv * qv - (v.d3h * inv_dh) * splat(1.0 / 6));
     const VM converged = inside & ((cv * (step * step)) * abs(step) <= splat(0.25) * st.tol);
     const VD moved = abs(next_x - st.x);
     st.iterations = st.iterations + splat(1.0);

@@ -423,8 +423,9 @@ class RootCollector {
       } else if (!precise) {
         // The error after a Halley step is about |C| step^3, with
         // C = (h''/2h')^2 - h'''/6h': below the tolerance, no further sample needed.
-        const double q = v.d2h / (2 * v.dh);
-        const double c = std::abs(q * q - v.d3h / (6 * v.dh));
+        const double inv_dh = 1 / v.dh;
+        const double q = 0.5 * (v.d2h * inv_dh);
+        const double c = std::abs(q * q - (v.d3h * inv_dh) * (1.0 / 6));
         // (c step^2 first: it is dimensionless, so nothing underflows on
         // tori of any size.)
         if (c * (step * step) * std::abs(step) <= 0.25 * tol) {
