@@ -32,11 +32,6 @@
 
 namespace toroid {
 
-// Whether the ray o + t d, for every t >= t_min, stays outside the convex
-// hull of the torus (major, minor) with a margin; false where unsure
-// (within the margins, for a non-finite point at t_min, and for a torus size
-// or |d|^2 outside the range where the products below stay normal: the
-// solver's range, 2^-100..2^100 and 2^-400..2^400).
 // The scale of the numbers a hull test is made of (|origin|, |t_min d|,
 // R + r), or 0 where a torus size or |d|^2 lies outside the range where the
 // products below stay normal (the solver's range): the tests are then unsure.
@@ -48,6 +43,11 @@ namespace toroid {
          std::abs(t_min) * (std::abs(d[0]) + std::abs(d[1]) + std::abs(d[2])) + major + minor;
 }
 
+// Whether the ray o + t d, for every t >= t_min, stays outside the convex
+// hull of the torus (major, minor) with a margin; false where unsure
+// (within the margins, for a non-finite point at t_min, and for a torus size
+// or |d|^2 outside the range where the products below stay normal: the
+// solver's range, 2^-100..2^100 and 2^-400..2^400).
 [[gnu::always_inline]] TOROID_HD inline bool ray_leaves_hull(double major, double minor, const double origin[3],
                                                              const double d[3], double t_min) {
   double q[3];

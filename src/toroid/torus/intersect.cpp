@@ -136,6 +136,11 @@ class TorusFactor {
     return {s, h, 2.0 * (a * drho + p[2] * d_[2]), 2.0 * dd_ + k, -3.0 * k * drho * inv_rho};
   }
 
+  // Where the ray passes nearest the axis (NaN for a ray along it).
+  TOROID_HD double axis_passage() const {
+    return c_ > 0 ? -(o_hi_[0] * d_[0] + o_hi_[1] * d_[1]) / c_ : std::numeric_limits<double>::quiet_NaN();
+  }
+
   // rho^2 at s, as sample() computes it.
   TOROID_HD double rho2(double s) const {
     const double x = o_hi_[0] + (s * d_[0] + o_lo_[0]), y = o_hi_[1] + (s * d_[1] + o_lo_[1]);
@@ -559,8 +564,7 @@ TOROID_HD Chord chord_of(const TorusFactor& f, const DoubleDouble o[3], const do
 // rounding of its surface (a caller walking the list from a root), h_out
 // not convex beyond the start (the ray turns towards the axis), or a root
 // so near the window's end that the list's root could lie on its other side.
-[[gnu::noinline]] TOROID_HD int exit_from_inside(const TorusFactor& f, const DoubleDouble o[3], const double d[3],
-                                                 double hi, const Window& window, double* out) {
+[[gnu::noinline]] TOROID_HD int exit_from_inside(const TorusFactor& f, double hi, const Window& window, double* out) {
   const double R = f.major(), r = f.minor(), s_min = window.s_min;
   const Sample start = f.sample(s_min);
   // Inside beyond the rounding two_or_none trusts, and beyond h's rounding
@@ -574,7 +578,7 @@ TOROID_HD Chord chord_of(const TorusFactor& f, const DoubleDouble o[3], const do
   // inside, else at an end), compared in sixth powers, with a margin far
   // above their rounding.
   const double c = f.c(), K = f.K();
-  const double s_axis = c > 0 ? -(o[0].hi * d[0] + o[1].hi * d[1]) / c : s_min;
+  const double s_axis = c > 0 ? f.axis_passage() : s_min;
   const double rho2 = s_axis > s_min && s_axis < hi ? K / c : std::min(f.rho2(s_min), f.rho2(hi));
   const double rho_i3 = R * K / f.dd();
   if (!(rho2 * rho2 * rho2 > 1.01 * rho_i3 * rho_i3)) return -1;
@@ -644,7 +648,7 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   // A window that starts inside the chord of a ring torus's tube may start
   // inside the tube (a ray refracted into it).
   if (search == Search::First && f.is_outer() && f.minor() < f.major() && lo < s_min) {
-    const int exit = exit_from_inside(f, o, d, hi, window, out);
+    const int exit = exit_from_inside(f, hi, window, out);
     if (exit >= 0) return exit;
   }
   if (f.is_outer()) {
@@ -666,8 +670,7 @@ TOROID_HD int factor_roots(const TorusFactor& f, const DoubleDouble o[3], const 
   double concave_lo = 0, concave_hi = 0;  // empty: convex everywhere
   // Where the ray passes closest to the axis (NaN for a ray along it), and
   // rho's rounding there (see kAxisBlur).
-  const double s_axis =
-      f.c() > 0 ? -(o[0].hi * d[0] + o[1].hi * d[1]) / f.c() : std::numeric_limits<double>::quiet_NaN();
+  const double s_axis = f.axis_passage();
   const double blur = kAxisBlur * (std::abs(o[0].hi) + std::abs(o[1].hi));
   if (f.c() > 0) {
     if (f.K() == 0) {
