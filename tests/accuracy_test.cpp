@@ -164,6 +164,30 @@ TEST(NearestQuery, IsTheListsFirstRootAfterTheWindowsStart) {
   EXPECT_GT(inside, found / 10);
 }
 
+// A caller that walks a ray's roots one call at a time passes each answer
+// back as the next window's start: the walk from -infinity visits the
+// list's roots, bit for bit, each once (a tangent's double root once too),
+// and ends there, on every ray of every family.
+TEST(NearestQuery, WalksTheListFromItsOwnAnswers) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  int walked = 0;
+  for_each_ray_and_its_roots([&](const Family& f, const RayCase& c, const double* all, int n) {
+    std::vector<double> roots(all, all + n);
+    roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+    double lo = -kInf, t = 0;
+    std::size_t k = 0;
+    while (intersect_torus_nearest(c.major, c.minor, c.origin, c.direction, lo, kInf, &t)) {
+      ASSERT_LT(k, roots.size()) << f.name << ": the walk found more roots than the list";
+      ASSERT_EQ(t, roots[k]) << f.name << " root " << k;
+      lo = t;
+      ++k;
+    }
+    ASSERT_EQ(k, roots.size()) << f.name << ": the walk stopped early";
+    walked += static_cast<int>(k);
+  });
+  EXPECT_GT(walked, 40000);
+}
+
 // The roots the nearest-root query finds from inside the tube, measured
 // against MPFR's as the list's are (AccuracyBars): each ray's list, with
 // every root that follows a stretch inside the tube replaced by the query's
