@@ -578,7 +578,7 @@ TOROID_HD Chord chord_of(const TorusFactor& f, const DoubleDouble o[3], const do
   // inside, else at an end), compared in sixth powers, with a margin far
   // above their rounding.
   const double c = f.c(), K = f.K();
-  const double s_axis = c > 0 ? f.axis_passage() : s_min;
+  const double s_axis = f.axis_passage();  // NaN for a ray along the axis: the ends then
   const double rho2 = s_axis > s_min && s_axis < hi ? K / c : std::min(f.rho2(s_min), f.rho2(hi));
   const double rho_i3 = R * K / f.dd();
   if (!(rho2 * rho2 * rho2 > 1.01 * rho_i3 * rho_i3)) return -1;
