@@ -35,7 +35,11 @@ void intersect_world(const World& world, const Ray& ray, Intersections& xs) {
   sort_intersections(xs);
 }
 
-void index_objects(World& world) { world.index = ShapeBvh(world.objects); }
+void index_objects(World& world) {
+  std::vector<Tuple> point_lights;
+  for (const PointLight& light : world.lights) point_lights.push_back(light.position);
+  world.index = ShapeBvh(world.objects, point_lights);
+}
 
 namespace {
 bool indexed(const World& world) { return !world.objects.empty() && world.index.size() == world.objects.size(); }
@@ -68,8 +72,9 @@ namespace {
 // Whether an object that casts shadows lies between `point` and the light
 // at `light` (whose address also names it for the shadow cache). The ray
 // goes along light - point, not normalised: the light is at t = 1, and the
-// walk need not wait for a square root and a division.
-bool shadow_ray_blocked(const World& world, const Tuple& point, const Tuple& light) {
+// walk need not wait for a square root and a division. `point_light` is the
+// light's place in world.lights, for the index's light buffer, or -1.
+bool shadow_ray_blocked(const World& world, const Tuple& point, const Tuple& light, std::ptrdiff_t point_light = -1) {
   ++rays_traced_on_this_thread();
   const Ray ray{point, light - point};
   constexpr double t_light = 1;
@@ -96,7 +101,9 @@ bool shadow_ray_blocked(const World& world, const Tuple& point, const Tuple& lig
       if (slot.blocker->blocks(ray, t_light)) return true;
       slot.blocker = nullptr;
     }
-    return world.index.blocks(ray, t_light, &slot.blocker);
+    return point_light >= 0 ? world.index.blocks_towards_light(static_cast<std::size_t>(point_light), light, ray,
+                                                               t_light, &slot.blocker)
+                            : world.index.blocks(ray, t_light, &slot.blocker);
   }
   for (const auto& object : world.objects)
     if (object->blocks(ray, t_light)) return true;
@@ -157,14 +164,16 @@ Color refracted(const World& world, const Computations& comps, int remaining, co
 Color shade(const World& world, const Computations& comps, int remaining, const Containers& before) {
   const Material& m = comps.object->material();
   Color surface = kBlack;
-  for (const PointLight& light : world.lights) {
+  for (std::size_t i = 0; i < world.lights.size(); ++i) {
+    const PointLight& light = world.lights[i];
     // lighting's lightv; the shadow ray goes along light - point itself
     // (shadow_ray_blocked), so that it need not wait for this division.
     const Tuple lightv = normalize(light.position - comps.over_point);
     // A light behind the surface lights nothing, shadowed or not (lighting's
     // own test, on the same vector): spare its shadow ray.
     const bool faces_light = dot(lightv, comps.normalv) >= 0;
-    const bool shadowed = faces_light && shadow_ray_blocked(world, comps.over_point, light.position);
+    const bool shadowed =
+        faces_light && shadow_ray_blocked(world, comps.over_point, light.position, static_cast<std::ptrdiff_t>(i));
     surface += lighting_towards(m, *comps.object, light, comps.over_point, lightv, comps.eyev, comps.normalv,
                                 shadowed ? 0.0 : 1.0);
   }

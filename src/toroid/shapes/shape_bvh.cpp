@@ -161,7 +161,10 @@ template <typename Node>
 
 }  // namespace
 
-ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shapes.size()) {
+ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : ShapeBvh(shapes, {}) {}
+
+ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes, std::span<const Tuple> point_lights)
+    : size_(shapes.size()) {
   static_assert(sizeof(Node) == 64, "the index costs 64 bytes per shape (docs/performance.md, memory)");
   static std::atomic<std::uint64_t> next_serial{1};
   serial_ = next_serial++;
@@ -182,17 +185,23 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes) : size_(shape
     items.push_back(it);
   }
   if (items.empty()) return;
-  if (items.size() >= 3 && items.size() <= kSmallIndex) {
+  const bool small = items.size() >= 3 && items.size() <= kSmallIndex;
+  // Light buffers pay where a shadow ray would walk a hierarchy.
+  const bool light_buffers = !small && items.size() > 2 && !point_lights.empty();
+  if (small || light_buffers) {
     // The leaves' boxes as build() gives them, in the order indexed.
+    std::vector<Node>& pairs = small ? small_ : leaves_;
     for (std::size_t i = 0; i < items.size(); i += 2) {
       Node n{};  // an odd last node's second link stays 0
       for (std::size_t c = 0; c < 2 && i + c < items.size(); ++c) {
         set_child_box(n, static_cast<int>(c), items[i + c].box);
         n.link[c] = reinterpret_cast<std::uintptr_t>(items[i + c].shape);
       }
-      small_.push_back(n);
+      pairs.push_back(n);
     }
   }
+  if (light_buffers)
+    for (const Tuple& light : point_lights) add_light_buffer(items, light);
   nodes_.reserve(items.size() - 1);
   root_.link[0] = build(items, 0, items.size(), 0, kRoot, 0);
   has_root_ = true;
@@ -522,9 +531,150 @@ const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections&
   return found == kNone ? nullptr : &xs[found];
 }
 
+namespace {
+
+// How far beyond a box's directions its cells reach, in the faces' units
+// (w = 1): far above the rounding of a shadow ray's direction.
+constexpr double kLightBufferMargin = 1e-6;
+
+// A direction's cell in a light buffer of `cells` per side of a face: the
+// face of the axis where |q| is largest (2 axis, +1 for its negative side),
+// then q's other two coordinates over that one, from -1 to 1, cut into
+// `cells` each. Returns -1 for a direction that is zero or not finite.
+int light_cell(const double q[3], int cells) {
+  const double ax = std::abs(q[0]), ay = std::abs(q[1]), az = std::abs(q[2]);
+  const int axis = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
+  const double w = std::abs(q[axis]);
+  if (!(w > 0 && w < std::numeric_limits<double>::infinity())) return -1;
+  const double scale = 0.5 * cells / w;
+  const auto to_cell = [&](double x) {
+    const double c = (x + w) * scale;  // (x / w + 1) * cells / 2
+    return std::clamp(static_cast<int>(c), 0, cells - 1);
+  };
+  const int face = 2 * axis + (q[axis] < 0);
+  return (face * cells + to_cell(q[(axis + 1) % 3])) * cells + to_cell(q[(axis + 2) % 3]);
+}
+
+}  // namespace
+
+// Each shape goes into every cell that some direction from the light to its
+// box may fall in, with a cell to spare on every side (far more than the
+// rounding of the shadow rays' directions and of the slab test); a box
+// that holds the light, or nearly touches it, into every cell.
+void ShapeBvh::add_light_buffer(const std::vector<Item>& items, const Tuple& light) {
+  LightBuffer lb;
+  const double at[3] = {light.x, light.y, light.z};
+  std::copy(at, at + 3, lb.light);
+  lb.cells = std::clamp(static_cast<int>(8 * std::sqrt(static_cast<double>(items.size()))), 8, 128);
+  const int n = lb.cells;
+  // The farthest box corner sets `reach`, and how near a box may come
+  // before it goes into every cell.
+  double farthest = 0;
+  for (const Item& it : items)
+    farthest = std::max({farthest, std::abs(it.box.min.x - at[0]), std::abs(it.box.max.x - at[0]),
+                         std::abs(it.box.min.y - at[1]), std::abs(it.box.max.y - at[1]), std::abs(it.box.min.z - at[2]),
+                         std::abs(it.box.max.z - at[2])});
+  lb.reach = 1e6 * farthest;
+  const double near = 1e-6 * farthest;
+  // Calls add(cell, w) for every cell of shape k's, with w where its box
+  // begins along the face's axis.
+  const auto for_each_cell = [&](std::size_t k, auto&& add) {
+    const BoundingBox& b = items[k].box;
+    const double lo[3] = {b.min.x - at[0], b.min.y - at[1], b.min.z - at[2]};
+    const double hi[3] = {b.max.x - at[0], b.max.y - at[1], b.max.z - at[2]};
+    // The box's distance from the light in the maximum norm. A face's
+    // directions (its pyramid) reach points whose distance is their w, so
+    // the box's part in the pyramid lies at w >= the distance.
+    double distance = 0;
+    for (int a = 0; a < 3; ++a) distance = std::max({distance, lo[a], -hi[a]});
+    const bool near_light = distance <= near;
+    for (int face = 0; face < 6; ++face) {
+      const int axis = face / 2;
+      const double sign = face % 2 == 0 ? 1.0 : -1.0;
+      const double w_lo = std::max(std::min(sign * lo[axis], sign * hi[axis]), distance);
+      const double w_hi = std::max(sign * lo[axis], sign * hi[axis]);
+      int range[2][2] = {{0, n - 1}, {0, n - 1}};
+      if (!near_light) {
+        if (w_hi < w_lo) continue;  // no part of the box in the pyramid
+        // u = x / w over the box's part lies between the values at its
+        // corners (monotone in x, and in w > 0).
+        for (int i = 0; i < 2; ++i) {
+          const int a = (axis + 1 + i) % 3;
+          const double u_lo = std::min(lo[a] / w_lo, lo[a] / w_hi) - kLightBufferMargin;
+          const double u_hi = std::max(hi[a] / w_lo, hi[a] / w_hi) + kLightBufferMargin;
+          range[i][0] = static_cast<int>(std::clamp(std::floor((u_lo + 1) * 0.5 * n), 0.0, n - 1.0));
+          range[i][1] = static_cast<int>(std::clamp(std::floor((u_hi + 1) * 0.5 * n), 0.0, n - 1.0));
+          if (u_hi < -1 || u_lo > 1) range[i][1] = range[i][0] - 1;  // beside the face
+        }
+      }
+      for (int i = range[0][0]; i <= range[0][1]; ++i)
+        for (int j = range[1][0]; j <= range[1][1]; ++j)
+          add(static_cast<std::size_t>((face * n + i) * n + j), near_light ? 0.0 : w_lo);
+    }
+  };
+  // Counted, then placed, then each cell sorted by w.
+  const std::size_t cell_count = static_cast<std::size_t>(6 * n * n);
+  lb.first.assign(cell_count + 1, 0);
+  for (std::size_t k = 0; k < items.size(); ++k) for_each_cell(k, [&](std::size_t c, double) { ++lb.first[c + 1]; });
+  for (std::size_t c = 0; c < cell_count; ++c) lb.first[c + 1] += lb.first[c];
+  lb.leaf.resize(lb.first[cell_count]);
+  std::vector<std::uint32_t> next(lb.first.begin(), lb.first.end() - 1);
+  for (std::size_t k = 0; k < items.size(); ++k)
+    for_each_cell(k, [&](std::size_t c, double w) {
+      lb.leaf[next[c]++] = {round_down(w), static_cast<std::uint32_t>(k)};
+    });
+  for (std::size_t c = 0; c < cell_count; ++c)
+    std::sort(lb.leaf.begin() + lb.first[c], lb.leaf.begin() + lb.first[c + 1],
+              [](const LightBuffer::Entry& x, const LightBuffer::Entry& y) { return x.w < y.w; });
+  light_buffers_.push_back(std::move(lb));
+}
+
+bool ShapeBvh::blocks_towards_light(std::size_t light, const Tuple& position, const Ray& ray, double t_max,
+                                    const Shape** blocker) const {
+  if (light >= light_buffers_.size()) return blocks(ray, t_max, blocker);
+  const LightBuffer& lb = light_buffers_[light];
+  if (position.x != lb.light[0] || position.y != lb.light[1] || position.z != lb.light[2])
+    return blocks(ray, t_max, blocker);
+  // The direction from the light to the ray's origin.
+  const double q[3] = {-ray.direction.x, -ray.direction.y, -ray.direction.z};
+  const int cell =
+      std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}) <= lb.reach ? light_cell(q, lb.cells) : -1;
+  if (cell < 0) return blocks(ray, t_max, blocker);
+  auto blocked_by = [&](const Shape* s) {
+    if (!s->blocks(ray, t_max)) return false;
+    if (blocker) *blocker = s;
+    return true;
+  };
+  const bool plane_blocks = visit_planes(ray, [&](double t, const Plane* p) {
+    if (!(t >= 0 && t < t_max && p->casts_shadow)) return false;
+    if (blocker) *blocker = p;
+    return true;
+  });
+  if (plane_blocks) return true;
+  for (const Shape* s : unbounded_)
+    if (blocked_by(s)) return true;
+  const SlabRay r(ray, 0);
+  const auto c = static_cast<std::size_t>(cell);
+  // The shadow ray's points lie at most the origin's distance from the light
+  // along the face's axis: boxes that begin beyond it are left.
+  const double w_origin = (1 + 1e-9) * std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
+  for (std::uint32_t i = lb.first[c]; i < lb.first[c + 1] && lb.leaf[i].w <= w_origin; ++i) {
+    const std::uint32_t k = lb.leaf[i].leaf;
+    const Node& pair = leaves_[k / 2];
+    const int child = static_cast<int>(k % 2);
+    double entry;
+    if (enters(pair, child, r, t_max, entry) && blocked_by(reinterpret_cast<const Shape*>(pair.link[child])))
+      return true;
+  }
+  return false;
+}
+
 std::size_t ShapeBvh::bytes() const {
-  return (nodes_.capacity() + small_.capacity()) * sizeof(Node) + planes_.capacity() * sizeof(PlanePair) +
-         unbounded_.capacity() * sizeof(const Shape*);
+  std::size_t light_buffers = 0;
+  for (const LightBuffer& lb : light_buffers_)
+    light_buffers += lb.first.capacity() * sizeof(std::uint32_t) + lb.leaf.capacity() * sizeof(LightBuffer::Entry);
+  return (nodes_.capacity() + small_.capacity() + leaves_.capacity()) * sizeof(Node) +
+         planes_.capacity() * sizeof(PlanePair) + unbounded_.capacity() * sizeof(const Shape*) + light_buffers;
 }
 
 }  // namespace toroid

@@ -30,6 +30,9 @@ class ShapeBvh {
   // Indexes the shapes' parent-space boxes as they are now: rebuild after
   // adding, removing or moving shapes. The shapes must outlive the index.
   explicit ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes);
+  // The same, with a light buffer for each point light at `point_lights`
+  // (see blocks_towards_light).
+  ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes, std::span<const Tuple> point_lights);
 
   // How many shapes it indexes (bounded and unbounded).
   std::size_t size() const { return size_; }
@@ -42,6 +45,18 @@ class ShapeBvh {
   // Shape::blocks over every indexed shape; sets *blocker (when given) to
   // the indexed shape that blocks.
   bool blocks(const Ray& ray, double t_max, const Shape** blocker = nullptr) const;
+
+  // blocks() for a shadow ray from ray.origin towards the point light at
+  // `position`, the constructor's light number `light`: ray.direction is
+  // `position` minus the origin, and t_max at most 1. The same answer, from
+  // the light buffer (Haines and Greenberg 1986) where the index has one:
+  // the directions from the light, cut into cells on the six faces of a
+  // cube around it, each listing the shapes whose box some direction of the
+  // cell meets. A shadow ray tests the boxes of its cell's shapes alone,
+  // rather than walking the hierarchy from its root.
+  // A light that has moved since (or was not given) is answered by blocks().
+  bool blocks_towards_light(std::size_t light, const Tuple& position, const Ray& ray, double t_max,
+                            const Shape** blocker = nullptr) const;
 
   // Whether some indexed shape, or a shape below one, is transparent (has
   // refraction): then shading needs intersect_up_to_hit.
@@ -118,6 +133,27 @@ class ShapeBvh {
   // node's second link is 0), for walk_small.
   static constexpr std::size_t kSmallIndex = 8;
   std::vector<Node> small_;
+  // The light buffers: the leaves' boxes two to a node in the order the
+  // shapes were indexed (as small_ holds them), and per point light the
+  // shapes of each cell, by their place in that order.
+  struct LightBuffer {
+    double light[3];
+    int cells;  // per side of a face
+    // Directions longer than this (from shading points far beyond every
+    // box, whose rounding could move a ray across a cell) walk the index.
+    double reach;
+    // A shape of a cell: where its box begins along the face's axis (w,
+    // rounded down), and its place among the leaves.
+    struct Entry {
+      float w;
+      std::uint32_t leaf;
+    };
+    std::vector<std::uint32_t> first;  // cell c's shapes: leaf[first[c]] to leaf[first[c + 1] - 1], by w
+    std::vector<Entry> leaf;
+  };
+  void add_light_buffer(const std::vector<Item>& items, const Tuple& light);
+  std::vector<Node> leaves_;
+  std::vector<LightBuffer> light_buffers_;
   std::vector<PlanePair> planes_;        // unbounded planes, tested by every query
   const Plane* odd_plane_ = nullptr;     // the last of an odd number of them
   std::vector<const Shape*> unbounded_;  // other unbounded shapes, likewise

@@ -200,6 +200,54 @@ TEST(ShapeBvh, BlocksWhenSomeShadowCasterLiesBeforeTMax) {
   EXPECT_GT(blocked, 1000);
 }
 
+// The light buffers answer each shadow ray as the walk does: lights inside
+// the cloud of shapes (some boxes hold them or nearly touch them), on a box's
+// face, beside it and far away; shadow rays from points around and inside
+// the cloud, and from far beyond it (which walk the index instead).
+TEST(ShapeBvh, ShadowRaysTowardsAPointLightAreBlockedAsTheWalkSays) {
+  const auto shapes = scattered_shapes();
+  const BoundingBox box1 = shapes[1]->parent_space_bounds(), box2 = shapes[2]->parent_space_bounds();
+  const std::vector<Tuple> lights = {
+      point(0.5, 0.3, -0.2), point(-10, 12, -10),         point(25, -3, 8), point(1000, 2000, -1500),
+      point(0, 0, 12),       (box1.min + box1.max) * 0.5, box2.min};
+  const ShapeBvh bvh(shapes, lights);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> near(-30, 30), far(-1e9, 1e9);
+  int blocked = 0, open = 0;
+  for (std::size_t light = 0; light < lights.size(); ++light)
+    for (int i = 0; i < 4000; ++i) {
+      const Tuple from = i % 50 == 0 ? point(far(rng), far(rng), far(rng)) : point(near(rng), near(rng), near(rng));
+      const Ray ray{from, lights[light] - from};
+      const bool expected = bvh.blocks(ray, 1);
+      // (From a billion units away the rounding of the slab tests and of the
+      // shapes' own tests may differ: there the walk is the reference.)
+      if (i % 50 != 0)
+        ASSERT_EQ(expected,
+                  std::any_of(shapes.begin(), shapes.end(), [&](const auto& s) { return s->blocks(ray, 1); }));
+      ASSERT_EQ(bvh.blocks_towards_light(light, lights[light], ray, 1), expected)
+          << "light " << light << ", from " << from.x << " " << from.y << " " << from.z;
+      (expected ? blocked : open) += 1;
+    }
+  EXPECT_GT(blocked, 2000);
+  EXPECT_GT(open, 2000);
+}
+
+TEST(ShapeBvh, AMovedOrUnknownLightIsAnsweredByTheWalk) {
+  const auto shapes = scattered_shapes();
+  const ShapeBvh bvh(shapes, std::vector<Tuple>{point(0, 0, -30)});
+  // A light the buffer was not built for: its shape lists would be wrong.
+  const Tuple moved = point(0, 0, 0);
+  int blocked = 0;
+  for (const Ray& ray : random_rays(2000)) {
+    const Ray shadow{ray.origin, moved - ray.origin};
+    const bool expected = bvh.blocks(shadow, 1);
+    EXPECT_EQ(bvh.blocks_towards_light(0, moved, shadow, 1), expected);
+    EXPECT_EQ(bvh.blocks_towards_light(1, moved, shadow, 1), expected);
+    blocked += expected;
+  }
+  EXPECT_GT(blocked, 200);
+}
+
 // Every shape made glass, or only the spheres: the index lists everything
 // up to the hit only for a hit that refracts.
 void make_glass(std::span<const std::shared_ptr<Shape>> shapes, bool spheres_only) {
