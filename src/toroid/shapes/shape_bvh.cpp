@@ -536,6 +536,9 @@ namespace {
 // How far beyond a box's directions its cells reach, in the faces' units
 // (w = 1): far above the rounding of a shadow ray's direction.
 constexpr double kLightBufferMargin = 1e-6;
+// The most a light buffer may hold: entries per shape on average, and bytes.
+constexpr std::size_t kLightBufferEntriesPerShape = 128;
+constexpr std::size_t kLightBufferBytes = std::size_t{64} << 20;
 
 // A direction's cell in a light buffer of `cells` per side of a face: the
 // face of the axis where |q| is largest (2 axis, +1 for its negative side),
@@ -617,7 +620,15 @@ void ShapeBvh::add_light_buffer(const std::vector<Item>& items, const Tuple& lig
   lb.first.assign(cell_count + 1, 0);
   for (std::size_t k = 0; k < items.size(); ++k) for_each_cell(k, [&](std::size_t c, double) { ++lb.first[c + 1]; });
   for (std::size_t c = 0; c < cell_count; ++c) lb.first[c + 1] += lb.first[c];
-  lb.leaf.resize(lb.first[cell_count]);
+  // A light whose cells would hold too much (many shapes near it, each in
+  // many cells) keeps no buffer: its shadow rays walk the index.
+  const std::size_t entries = lb.first[cell_count];
+  if (entries > kLightBufferEntriesPerShape * items.size() ||
+      entries * sizeof(LightBuffer::Entry) > kLightBufferBytes) {
+    light_buffers_.push_back({});
+    return;
+  }
+  lb.leaf.resize(entries);
   std::vector<std::uint32_t> next(lb.first.begin(), lb.first.end() - 1);
   for (std::size_t k = 0; k < items.size(); ++k)
     for_each_cell(k, [&](std::size_t c, double w) {
@@ -633,7 +644,7 @@ bool ShapeBvh::blocks_towards_light(std::size_t light, const Tuple& position, co
                                     const Shape** blocker) const {
   if (light >= light_buffers_.size()) return blocks(ray, t_max, blocker);
   const LightBuffer& lb = light_buffers_[light];
-  if (position.x != lb.light[0] || position.y != lb.light[1] || position.z != lb.light[2])
+  if (lb.cells == 0 || position.x != lb.light[0] || position.y != lb.light[1] || position.z != lb.light[2])
     return blocks(ray, t_max, blocker);
   // The direction from the light to the ray's origin.
   const double q[3] = {-ray.direction.x, -ray.direction.y, -ray.direction.z};

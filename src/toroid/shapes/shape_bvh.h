@@ -137,11 +137,11 @@ class ShapeBvh {
   // shapes were indexed (as small_ holds them), and per point light the
   // shapes of each cell, by their place in that order.
   struct LightBuffer {
-    double light[3];
-    int cells;  // per side of a face
+    double light[3] = {};
+    int cells = 0;  // per side of a face; 0 where the light has no buffer
     // Directions longer than this (from shading points far beyond every
     // box, whose rounding could move a ray across a cell) walk the index.
-    double reach;
+    double reach = 0;
     // A shape of a cell: where its box begins along the face's axis (w,
     // rounded down), and its place among the leaves.
     struct Entry {
