@@ -221,9 +221,10 @@ TEST(ShapeBvh, ShadowRaysTowardsAPointLightAreBlockedAsTheWalkSays) {
       const bool expected = bvh.blocks(ray, 1);
       // (From a billion units away the rounding of the slab tests and of the
       // shapes' own tests may differ: there the walk is the reference.)
-      if (i % 50 != 0)
+      if (i % 50 != 0) {
         ASSERT_EQ(expected,
                   std::any_of(shapes.begin(), shapes.end(), [&](const auto& s) { return s->blocks(ray, 1); }));
+      }
       ASSERT_EQ(bvh.blocks_towards_light(light, lights[light], ray, 1), expected)
           << "light " << light << ", from " << from.x << " " << from.y << " " << from.z;
       (expected ? blocked : open) += 1;
