@@ -32,6 +32,8 @@ ROWS = [
     ("blocks, mixed", "BM_Blocks/default_mixed", "BM_Blocks/ferrari_mixed", 0.8),
     ("nearest root, from a surface", "BM_Nearest/default_surface", "BM_Nearest/ferrari_surface", None),
     ("blocks, from a surface", "BM_Blocks/default_surface", "BM_Blocks/ferrari_surface", None),
+    ("nearest root, from a surface, window from -0", "BM_Nearest/default_surface_from_zero", "BM_Nearest/ferrari_surface", None),
+    ("blocks, from a surface, window from -0", "BM_Blocks/default_surface_from_zero", "BM_Blocks/ferrari_surface", None),
     ("nearest root, from inside", "BM_Nearest/default_inside", "BM_Nearest/ferrari_inside", None),
     ("batch avx512, mixed", "BM_Batch/avx512_mixed", "BM_AllRoots/ferrari_mixed", 0.35),
     ("batch avx2, mixed", "BM_Batch/avx2_mixed", "BM_AllRoots/ferrari_mixed", 0.35),

@@ -131,26 +131,30 @@ void BM_AllRoots(benchmark::State& state, toroid::TorusSolver solver, bool hits_
   state.SetItemsProcessed(state.iterations());
 }
 
-void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver, From from) {
+// A window query's start: 1e-9, or a renderer's -denorm_min (a root at t = 0
+// counts), which must cost the same (no arithmetic on the subnormal start).
+constexpr double kFromZero = -std::numeric_limits<double>::denorm_min();
+
+void BM_Nearest(benchmark::State& state, toroid::TorusSolver solver, From from, double t_min = 1e-9) {
   const auto& rs = rays_from(from);
   size_t i = 0;
   double t = 0;
   for (auto _ : state) {
     const BenchRay& r = rs[i++ & (rs.size() - 1)];
     benchmark::DoNotOptimize(
-        toroid::intersect_torus_nearest(kR, kr, r.o, r.d, 1e-9, std::numeric_limits<double>::infinity(), &t, solver));
+        toroid::intersect_torus_nearest(kR, kr, r.o, r.d, t_min, std::numeric_limits<double>::infinity(), &t, solver));
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations());
 }
 
-void BM_Blocks(benchmark::State& state, toroid::TorusSolver solver, From from) {
+void BM_Blocks(benchmark::State& state, toroid::TorusSolver solver, From from, double t_min = 1e-9) {
   const auto& rs = rays_from(from);
   size_t i = 0;
   for (auto _ : state) {
     const BenchRay& r = rs[i++ & (rs.size() - 1)];
     benchmark::DoNotOptimize(
-        toroid::torus_blocks(kR, kr, r.o, r.d, 1e-9, std::numeric_limits<double>::infinity(), solver));
+        toroid::torus_blocks(kR, kr, r.o, r.d, t_min, std::numeric_limits<double>::infinity(), solver));
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations());
@@ -193,12 +197,14 @@ TOROID_BENCH(BM_Nearest, default_mixed, TorusSolver::Default, From::Afar);
 TOROID_BENCH(BM_Nearest, ferrari_mixed, TorusSolver::Ferrari, From::Afar);
 TOROID_BENCH(BM_Nearest, tianheng_mixed, TorusSolver::Tianheng, From::Afar);
 TOROID_BENCH(BM_Nearest, default_surface, TorusSolver::Default, From::Surface);
+TOROID_BENCH(BM_Nearest, default_surface_from_zero, TorusSolver::Default, From::Surface, kFromZero);
 TOROID_BENCH(BM_Nearest, ferrari_surface, TorusSolver::Ferrari, From::Surface);
 TOROID_BENCH(BM_Nearest, default_inside, TorusSolver::Default, From::Inside);
 TOROID_BENCH(BM_Nearest, ferrari_inside, TorusSolver::Ferrari, From::Inside);
 TOROID_BENCH(BM_Blocks, default_mixed, TorusSolver::Default, From::Afar);
 TOROID_BENCH(BM_Blocks, ferrari_mixed, TorusSolver::Ferrari, From::Afar);
 TOROID_BENCH(BM_Blocks, default_surface, TorusSolver::Default, From::Surface);
+TOROID_BENCH(BM_Blocks, default_surface_from_zero, TorusSolver::Default, From::Surface, kFromZero);
 TOROID_BENCH(BM_Blocks, ferrari_surface, TorusSolver::Ferrari, From::Surface);
 TOROID_BENCH(BM_Batch, scalar_mixed, BatchPath::Scalar, false);
 TOROID_BENCH(BM_Batch, avx2_mixed, BatchPath::Avx2, false);

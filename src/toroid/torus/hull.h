@@ -32,6 +32,15 @@
 
 namespace toroid {
 
+// The window's start as the tests compute with it: a start nearer 0 than
+// the least normal double is taken as 0. Such a start (-denorm_min, a
+// renderer's way to count a root at t = 0) moves q by less than 2^-874
+// (|d| < 2^200), far below the margins, and a product with a subnormal
+// result costs many processors a microcode assist on every query.
+[[gnu::always_inline]] TOROID_HD inline double hull_test_start(double t_min) {
+  return std::abs(t_min) < 0x1p-1022 ? 0.0 : t_min;
+}
+
 // The scale of the numbers a hull test is made of (|origin|, |t_min d|,
 // R + r), or 0 where a torus size or |d|^2 lies outside the range where the
 // products below stay normal (the solver's range): the tests are then unsure.
@@ -50,6 +59,7 @@ namespace toroid {
 // solver's range, 2^-100..2^100 and 2^-400..2^400).
 [[gnu::always_inline]] TOROID_HD inline bool ray_leaves_hull(double major, double minor, const double origin[3],
                                                              const double d[3], double t_min) {
+  t_min = hull_test_start(t_min);
   double q[3];
   for (int i = 0; i < 3; ++i) q[i] = origin[i] + t_min * d[i];
   // The tube's plane needs q.d >= -R |d| (c.d >= -R |d|), and so does the
@@ -90,6 +100,7 @@ namespace toroid {
 // the solver's range.
 [[gnu::always_inline]] TOROID_HD inline bool ray_leaves_through_hole(double major, double minor, const double origin[3],
                                                                      const double d[3], double t_min) {
+  t_min = hull_test_start(t_min);
   double q[3];
   for (int i = 0; i < 3; ++i) q[i] = origin[i] + t_min * d[i];
   if (!(minor < major) || d[2] == 0 || q[2] * d[2] < 0) return false;
