@@ -487,7 +487,10 @@ bool ShapeBvh::intersect_nearest(const Ray& ray, double t_max, Intersection& hit
   return found;
 }
 
-bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const {
+// blocks(): the planes, the other unbounded shapes, then `bounded`, which
+// is handed the test of one bounded shape and asks it of those it chooses.
+template <typename Bounded>
+bool ShapeBvh::blocks_with(const Ray& ray, double t_max, const Shape** blocker, Bounded&& bounded) const {
   auto blocked_by = [&](const Shape* s) {
     if (!s->blocks(ray, t_max)) return false;
     if (blocker) *blocker = s;
@@ -501,7 +504,13 @@ bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const
   if (plane_blocks) return true;
   for (const Shape* s : unbounded_)
     if (blocked_by(s)) return true;
-  return small_.empty() ? walk(ray, 0, t_max, true, blocked_by) : walk_small(ray, t_max, blocked_by);
+  return bounded(blocked_by);
+}
+
+bool ShapeBvh::blocks(const Ray& ray, double t_max, const Shape** blocker) const {
+  return blocks_with(ray, t_max, blocker, [&](auto& blocked_by) {
+    return small_.empty() ? walk(ray, 0, t_max, true, blocked_by) : walk_small(ray, t_max, blocked_by);
+  });
 }
 
 const Intersection* ShapeBvh::intersect_up_to_hit(const Ray& ray, Intersections& xs) const {
@@ -651,33 +660,22 @@ bool ShapeBvh::blocks_towards_light(std::size_t light, const Tuple& position, co
   const int cell =
       std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}) <= lb.reach ? light_cell(q, lb.cells) : -1;
   if (cell < 0) return blocks(ray, t_max, blocker);
-  auto blocked_by = [&](const Shape* s) {
-    if (!s->blocks(ray, t_max)) return false;
-    if (blocker) *blocker = s;
-    return true;
-  };
-  const bool plane_blocks = visit_planes(ray, [&](double t, const Plane* p) {
-    if (!(t >= 0 && t < t_max && p->casts_shadow)) return false;
-    if (blocker) *blocker = p;
-    return true;
-  });
-  if (plane_blocks) return true;
-  for (const Shape* s : unbounded_)
-    if (blocked_by(s)) return true;
   const SlabRay r(ray, 0);
   const auto c = static_cast<std::size_t>(cell);
   // The shadow ray's points lie at most the origin's distance from the light
   // along the face's axis: boxes that begin beyond it are left.
   const double w_origin = (1 + 1e-9) * std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
-  for (std::uint32_t i = lb.first[c]; i < lb.first[c + 1] && lb.leaf[i].w <= w_origin; ++i) {
-    const std::uint32_t k = lb.leaf[i].leaf;
-    const Node& pair = leaves_[k / 2];
-    const int child = static_cast<int>(k % 2);
-    double entry;
-    if (enters(pair, child, r, t_max, entry) && blocked_by(reinterpret_cast<const Shape*>(pair.link[child])))
-      return true;
-  }
-  return false;
+  return blocks_with(ray, t_max, blocker, [&](auto& blocked_by) {
+    for (std::uint32_t i = lb.first[c]; i < lb.first[c + 1] && lb.leaf[i].w <= w_origin; ++i) {
+      const std::uint32_t k = lb.leaf[i].leaf;
+      const Node& pair = leaves_[k / 2];
+      const int child = static_cast<int>(k % 2);
+      double entry;
+      if (enters(pair, child, r, t_max, entry) && blocked_by(reinterpret_cast<const Shape*>(pair.link[child])))
+        return true;
+    }
+    return false;
+  });
 }
 
 std::size_t ShapeBvh::bytes() const {

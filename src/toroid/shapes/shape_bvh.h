@@ -107,6 +107,8 @@ class ShapeBvh {
   bool walk(const Ray& ray, double t_min, const double& t_max, bool any_order, Stop&& stop) const;
   template <typename Stop>
   bool walk_small(const Ray& ray, const double& t_max, Stop&& stop) const;
+  template <typename Bounded>
+  bool blocks_with(const Ray& ray, double t_max, const Shape** blocker, Bounded&& bounded) const;
 
   // Unbounded planes, two at a time, by the one row of each one's inverse
   // transform that gives a point's object-space height (copied here: every
