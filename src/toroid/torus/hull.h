@@ -32,6 +32,8 @@
 
 namespace toroid {
 
+constexpr double kHullEps = 0x1p-52;
+
 // The window's start as the tests compute with it: a start nearer 0 than
 // the least normal double is taken as 0. Such a start (-denorm_min, a
 // renderer's way to count a root at t = 0) moves q by less than 2^-874
@@ -110,8 +112,16 @@ namespace toroid {
   if (scale == 0) return false;
   const double a = major - std::sqrt(rho2);
   if (!(a * a + q[2] * q[2] - minor * minor > 0x1p-30 * scale * scale)) return false;
-  // Where the ray meets the face it moves towards (at q already, if beyond it).
-  const double s = std::fmax(0.0, ((d[2] > 0 ? minor : -minor) - q[2]) / d[2]);
+  // Where the ray meets the face it moves towards (at q already, if beyond
+  // it), or later: q_z carries the rounding of o_z + t_min d_z, a few eps of
+  // their size, which moves the crossing by that over |d_z| (a ray almost
+  // parallel to the face crosses it far from where the rounded q_z says).
+  // rho^2 is convex along the ray, so it stays below its larger end value
+  // on the longer stretch too.
+  const double face = (d[2] > 0 ? minor : -minor) - q[2];
+  const double s_rounded = std::fmax(0.0, face / d[2]);
+  const double s = s_rounded + 4 * kHullEps * ((std::abs(origin[2]) + std::abs(t_min * d[2]) + minor) / std::abs(d[2]) +
+                                               s_rounded);
   const double x = q[0] + s * d[0], y = q[1] + s * d[1];
   return x * x + y * y <= rho2 - 0x1p-40 * scale * scale;
 }

@@ -194,6 +194,27 @@ TEST(TorusHole, RaysThatMeetTheTorusAfterTheirStartNeverPass) {
   }
 }
 
+// Found by intersect_fuzz: a ray almost parallel to the slab's top face
+// (d_z ~ 1e-15 |d|), starting just below it inside the hole of a ring torus
+// a hair short of a horn one, crosses the face where it started (t = 0,
+// o_z = r) but the rounded q_z put the crossing at t = -0.005, before the ray
+// has passed over the top of the tube: the test passed it, and the ray
+// meets the torus at t = -0.0022.
+TEST(TorusHole, ARayAlmostParallelToTheFaceIsNotPassedOnItsRoundedCrossing) {
+  const double R = 1.038785616009364e-13, r = 1.0387856152602562e-13;
+  const double o[3] = {7.105842330643226e-15, 1.0387866994624287e-13, 1.0387856152602562e-13};
+  const double d[3] = {1.0387856152602562e-13, 1.0302869676730328e-13, 7.381454501549289e-28};
+  const double t_min = -1.0660123280237737;
+  double t[4];
+  const int n = intersect_torus(R, r, o, d, t);
+  ASSERT_EQ(n, 4);
+  EXPECT_LT(t_min, t[2]);  // a root after the window's start
+  EXPECT_FALSE(ray_leaves_through_hole(R, r, o, d, t_min));
+  double nearest = 0;
+  ASSERT_TRUE(intersect_torus_nearest(R, r, o, d, t_min, kInf, &nearest));
+  EXPECT_EQ(nearest, t[2]);
+}
+
 TEST(TorusHole, OnlyRingToriAndStartsOutsideTheTubeMovingOutOfTheSlabNearerTheAxis) {
   const Torus t{1, 0.25};
   // From the hole's side of the tube, at z = 0.1, rising steeply towards the axis: passes.
