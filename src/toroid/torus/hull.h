@@ -120,8 +120,8 @@ constexpr double kHullEps = 0x1p-52;
   // on the longer stretch too.
   const double face = (d[2] > 0 ? minor : -minor) - q[2];
   const double s_rounded = std::fmax(0.0, face / d[2]);
-  const double s = s_rounded + 4 * kHullEps * ((std::abs(origin[2]) + std::abs(t_min * d[2]) + minor) / std::abs(d[2]) +
-                                               s_rounded);
+  const double s =
+      s_rounded + 4 * kHullEps * ((std::abs(origin[2]) + std::abs(t_min * d[2]) + minor) / std::abs(d[2]) + s_rounded);
   const double x = q[0] + s * d[0], y = q[1] + s * d[1];
   return x * x + y * y <= rho2 - 0x1p-40 * scale * scale;
 }
