@@ -187,7 +187,7 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes, std::span<con
   if (items.empty()) return;
   const bool small = items.size() >= 3 && items.size() <= kSmallIndex;
   // Light buffers pay where a shadow ray would walk a hierarchy.
-  const bool light_buffers = !small && items.size() > 2 && !point_lights.empty();
+  const bool light_buffers = items.size() > kSmallIndex && !point_lights.empty();
   if (small || light_buffers) {
     // The leaves' boxes as build() gives them, in the order indexed.
     std::vector<Node>& pairs = small ? small_ : leaves_;
@@ -570,9 +570,9 @@ int light_cell(const double q[3], int cells) {
 }  // namespace
 
 // Each shape goes into every cell that some direction from the light to its
-// box may fall in, with a cell to spare on every side (far more than the
-// rounding of the shadow rays' directions and of the slab test); a box
-// that holds the light, or nearly touches it, into every cell.
+// box may fall in, widened by kLightBufferMargin (far more than the rounding
+// of the shadow rays' directions and of the slab test); a box that holds
+// the light, or nearly touches it, into every cell.
 void ShapeBvh::add_light_buffer(const std::vector<Item>& items, const Tuple& light) {
   LightBuffer lb;
   const double at[3] = {light.x, light.y, light.z};
@@ -655,16 +655,17 @@ bool ShapeBvh::blocks_towards_light(std::size_t light, const Tuple& position, co
   const LightBuffer& lb = light_buffers_[light];
   if (lb.cells == 0 || position.x != lb.light[0] || position.y != lb.light[1] || position.z != lb.light[2])
     return blocks(ray, t_max, blocker);
-  // The direction from the light to the ray's origin.
+  // The direction from the light to the ray's origin, and the origin's
+  // distance from the light along the face's axis (the largest |q|).
   const double q[3] = {-ray.direction.x, -ray.direction.y, -ray.direction.z};
-  const int cell =
-      std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}) <= lb.reach ? light_cell(q, lb.cells) : -1;
+  const double w = std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
+  const int cell = w <= lb.reach ? light_cell(q, lb.cells) : -1;
   if (cell < 0) return blocks(ray, t_max, blocker);
   const SlabRay r(ray, 0);
   const auto c = static_cast<std::size_t>(cell);
-  // The shadow ray's points lie at most the origin's distance from the light
-  // along the face's axis: boxes that begin beyond it are left.
-  const double w_origin = (1 + 1e-9) * std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
+  // The shadow ray's points lie at most that far from the light: boxes that
+  // begin beyond it are left.
+  const double w_origin = (1 + 1e-9) * w;
   return blocks_with(ray, t_max, blocker, [&](auto& blocked_by) {
     for (std::uint32_t i = lb.first[c]; i < lb.first[c + 1] && lb.leaf[i].w <= w_origin; ++i) {
       const std::uint32_t k = lb.leaf[i].leaf;

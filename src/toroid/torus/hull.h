@@ -27,12 +27,11 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "toroid/math/device.h"
 
 namespace toroid {
-
-constexpr double kHullEps = 0x1p-52;
 
 // The window's start as the tests compute with it: a start nearer 0 than
 // the least normal double is taken as 0. Such a start (-denorm_min, a
@@ -121,7 +120,8 @@ constexpr double kHullEps = 0x1p-52;
   const double face = (d[2] > 0 ? minor : -minor) - q[2];
   const double s_rounded = std::fmax(0.0, face / d[2]);
   const double s =
-      s_rounded + 4 * kHullEps * ((std::abs(origin[2]) + std::abs(t_min * d[2]) + minor) / std::abs(d[2]) + s_rounded);
+      s_rounded + 4 * std::numeric_limits<double>::epsilon() *
+                      ((std::abs(origin[2]) + std::abs(t_min * d[2]) + minor) / std::abs(d[2]) + s_rounded);
   const double x = q[0] + s * d[0], y = q[1] + s * d[1];
   return x * x + y * y <= rho2 - 0x1p-40 * scale * scale;
 }
