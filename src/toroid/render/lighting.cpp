@@ -10,11 +10,6 @@ namespace toroid {
 
 namespace {
 
-Color effective_color(const Material& m, const Shape& object, const Tuple& point, const Color& intensity) {
-  const Color surface = m.pattern ? m.pattern->pattern_at_shape(object, point) : m.color;
-  return surface * intensity;
-}
-
 // Diffuse plus specular light from a light of `intensity` in the unit
 // direction `lightv` (from the point towards the light).
 Color diffuse_specular(const Material& m, const Color& effective, const Color& intensity, const Tuple& lightv,
@@ -33,22 +28,27 @@ Color diffuse_specular(const Material& m, const Color& effective, const Color& i
 
 }  // namespace
 
-Color lighting(const Material& m, const Shape& object, const PointLight& light, const Tuple& point, const Tuple& eyev,
-               const Tuple& normalv, double light_intensity) {
-  return lighting_towards(m, object, light, point, normalize(light.position - point), eyev, normalv, light_intensity);
+Color surface_color(const Material& m, const Shape& object, const Tuple& point) {
+  return m.pattern ? m.pattern->pattern_at_shape(object, point) : m.color;
 }
 
-Color lighting_towards(const Material& m, const Shape& object, const PointLight& light, const Tuple& point,
-                       const Tuple& lightv, const Tuple& eyev, const Tuple& normalv, double light_intensity) {
-  const Color effective = effective_color(m, object, point, light.intensity);
+Color lighting(const Material& m, const Shape& object, const PointLight& light, const Tuple& point, const Tuple& eyev,
+               const Tuple& normalv, double light_intensity) {
+  return lighting_towards(m, surface_color(m, object, point), light, normalize(light.position - point), eyev, normalv,
+                          light_intensity);
+}
+
+Color lighting_towards(const Material& m, const Color& surface, const PointLight& light, const Tuple& lightv,
+                       const Tuple& eyev, const Tuple& normalv, double light_intensity) {
+  const Color effective = surface * light.intensity;
   const Color ambient = effective * m.ambient;
   if (light_intensity <= 0) return ambient;
   return ambient + diffuse_specular(m, effective, light.intensity, lightv, eyev, normalv) * light_intensity;
 }
 
-Color lighting(const Material& m, const Shape& object, const AreaLight& light, const Tuple& point, const Tuple& eyev,
+Color lighting(const Material& m, const Color& surface, const AreaLight& light, const Tuple& point, const Tuple& eyev,
                const Tuple& normalv, double light_intensity) {
-  const Color effective = effective_color(m, object, point, light.intensity);
+  const Color effective = surface * light.intensity;
   const Color ambient = effective * m.ambient;
   if (light_intensity <= 0) return ambient;
   Color sum = kBlack;

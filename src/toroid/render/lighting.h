@@ -20,11 +20,15 @@ class Shape;
 Color lighting(const Material& material, const Shape& object, const PointLight& light, const Tuple& point,
                const Tuple& eyev, const Tuple& normalv, double light_intensity);
 
-// The same, given lightv = normalize(light.position - point), which a caller
-// that has computed it already (shade_hit, to skip the shadow ray of a light
-// behind the surface) need not have computed twice.
-Color lighting_towards(const Material& material, const Shape& object, const PointLight& light, const Tuple& point,
-                       const Tuple& lightv, const Tuple& eyev, const Tuple& normalv, double light_intensity);
+// The material's colour at `point` on `object`: its pattern there when it has
+// one, else its colour. The same for every light, so shade_hit finds it once.
+Color surface_color(const Material& material, const Shape& object, const Tuple& point);
+
+// lighting, given the point's surface_color and lightv = normalize(light.position
+// - point), which shade_hit has computed already (the colour once for all its
+// lights; lightv to skip the shadow ray of a light behind the surface).
+Color lighting_towards(const Material& material, const Color& surface, const PointLight& light, const Tuple& lightv,
+                       const Tuple& eyev, const Tuple& normalv, double light_intensity);
 
 // The book's form: in_shadow == true means no light reaches the point.
 inline Color lighting(const Material& material, const Shape& object, const PointLight& light, const Tuple& point,
@@ -33,8 +37,14 @@ inline Color lighting(const Material& material, const Shape& object, const Point
 }
 
 // An area light: ambient once, plus the diffuse and specular light of every
-// sample (light.sample(light.jitter_key(point), u, v)) averaged, times light_intensity.
-Color lighting(const Material& material, const Shape& object, const AreaLight& light, const Tuple& point,
+// sample (light.sample(light.jitter_key(point), u, v)) averaged, times
+// light_intensity; `surface` is the point's surface_color.
+Color lighting(const Material& material, const Color& surface, const AreaLight& light, const Tuple& point,
                const Tuple& eyev, const Tuple& normalv, double light_intensity);
+
+inline Color lighting(const Material& material, const Shape& object, const AreaLight& light, const Tuple& point,
+                      const Tuple& eyev, const Tuple& normalv, double light_intensity) {
+  return lighting(material, surface_color(material, object, point), light, point, eyev, normalv, light_intensity);
+}
 
 }  // namespace toroid

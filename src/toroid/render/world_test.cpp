@@ -9,6 +9,7 @@
 
 #include "support/approx.h"
 #include "toroid/math/transform.h"
+#include "toroid/render/lighting.h"
 #include "toroid/render/pattern.h"
 #include "toroid/shapes/plane.h"
 #include "toroid/shapes/sphere.h"
@@ -437,6 +438,35 @@ TEST(WorldLighting, ShapesThatCastNoShadowAreSkippedByShadowRays) {
   ASSERT_TRUE(is_shadowed(w, p, w.lights[0]));
   for (const auto& object : w.objects) object->casts_shadow = false;
   EXPECT_FALSE(is_shadowed(w, p, w.lights[0]));
+}
+
+// The book's test_pattern(), counting how often it is asked.
+class CountingPattern : public Pattern {
+ public:
+  Color pattern_at(const Tuple& p) const override {
+    ++asked;
+    return Color{p.x, p.y, p.z};
+  }
+  mutable int asked = 0;
+};
+
+TEST(WorldLighting, ThePatternIsAskedOnceAPointHoweverManyLights) {
+  World w = default_world();
+  w.lights.push_back(PointLight{point(10, 10, -10), Color{0.5, 0.5, 0.5}});
+  w.lights.push_back(PointLight{point(0, -10, -10), Color{0.2, 0.2, 0.2}});
+  auto pattern = std::make_shared<CountingPattern>();
+  Material m = w.objects[0]->material();
+  m.pattern = pattern;
+  w.objects[0]->set_material(m);
+  const Ray r{point(0, 0, -5), vector(0, 0, 1)};  // the outer sphere, at (0, 0, -1)
+  const Color c = color_at(w, r);
+  EXPECT_EQ(pattern->asked, 1);
+  // The colour is still every light's Phong term with the pattern's colour.
+  const Tuple over = point(0, 0, -1);
+  Color expected = kBlack;
+  for (const PointLight& light : w.lights)
+    expected += lighting(m, *w.objects[0], light, over, vector(0, 0, -1), vector(0, 0, -1), false);
+  EXPECT_APPROX(c, expected);
 }
 
 TEST(WorldLighting, TheContributionsOfSeveralLightsAddUp) {
