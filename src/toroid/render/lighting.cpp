@@ -20,13 +20,25 @@ Color diffuse_specular(const Material& m, const Color& effective, const Color& i
   const Color diffuse = effective * m.diffuse * light_dot_normal;
   const Tuple reflectv = reflect(-lightv, normalv);
   const double reflect_dot_eye = dot(reflectv, eyev);
-  // No pow when the material has no highlight: the same result, without
-  // pow's cost (a large share of a shaded point's).
+  // No power when the material has no highlight: the same result, without
+  // its cost.
   if (reflect_dot_eye <= 0 || m.specular == 0) return diffuse;
-  return diffuse + intensity * (m.specular * std::pow(reflect_dot_eye, m.shininess));
+  return diffuse + intensity * (m.specular * specular_power(reflect_dot_eye, m.shininess));
 }
 
 }  // namespace
+
+double specular_power(double x, double shininess) {
+  if (!(shininess >= 1 && shininess <= 1024) || shininess != std::floor(shininess)) return std::pow(x, shininess);
+  auto n = static_cast<unsigned>(shininess);
+  double result = 1, square = x;
+  for (;;) {
+    if (n & 1) result *= square;
+    n >>= 1;
+    if (n == 0) return result;
+    square *= square;
+  }
+}
 
 Color surface_color(const Material& m, const Shape& object, const Tuple& point) {
   return m.pattern ? m.pattern->pattern_at_shape(object, point) : m.color;

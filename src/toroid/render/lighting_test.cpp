@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
 
 #include "support/approx.h"
@@ -143,6 +144,33 @@ TEST(Materials, LightingSamplesTheAreaLight) {
     const Tuple normalv = vector(e.pt.x, e.pt.y, e.pt.z);
     EXPECT_TRUE(approx_equal(lighting(shape.material(), shape, light, e.pt, eyev, normalv, 1.0), e.result, 1e-4));
   }
+}
+
+TEST(Materials, TheHighlightsPowerIsPowsToWithinItsExponentInUlps) {
+  // Whole exponents by squaring (within about n ulps of pow), others by pow
+  // itself; over the whole range of cosines, tiny ones included.
+  std::uint64_t state = 0x2545F4914F6CDD1Dull;
+  auto next = [&] {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return static_cast<double>(state >> 11) * 0x1p-53;
+  };
+  for (const double n : {1.0, 2.0, 3.0, 10.0, 50.0, 60.0, 200.0, 255.0, 1023.0, 1024.0}) {
+    SCOPED_TRACE(n);
+    EXPECT_EQ(specular_power(1.0, n), 1.0);
+    EXPECT_EQ(specular_power(0.0, n), 0.0);
+    EXPECT_EQ(specular_power(0.5, n), std::ldexp(1.0, -static_cast<int>(n)));  // exact: a power of two
+    for (int i = 0; i < 2000; ++i) {
+      const double x = 1 - next() * (i % 2 ? 1.0 : 0.01);  // highlights' cosines, near 1 and across (0, 1]
+      const double want = std::pow(x, n);
+      if (want < 0x1p-1000) continue;  // below the normal range ulps are wider
+      EXPECT_LE(std::abs(specular_power(x, n) - want), 2 * n * 0x1p-52 * want) << x;
+    }
+  }
+  // Not whole, or beyond the squaring's range: pow itself, bit for bit.
+  for (const double n : {0.5, 7.25, 199.999, 1025.0, 4096.0})
+    for (const double x : {0.25, 0.9, 0.999999}) EXPECT_EQ(specular_power(x, n), std::pow(x, n)) << n << " " << x;
 }
 
 }  // namespace
