@@ -11,6 +11,7 @@ namespace toroid {
 void Pattern::set_transform(const Matrix4& m) {
   transform_ = m;
   inverse_ = Affine::from(inverse(m));
+  untransformed_ = m == Matrix4::identity();
 }
 
 Color Pattern::pattern_at_shape(const Shape& shape, const Tuple& world_point) const {

@@ -30,7 +30,11 @@ class Pattern {
   virtual Color pattern_at(const Tuple& pattern_point) const = 0;
   // The colour at a point in the space the pattern is attached to (for a
   // material: the shape's object space); applies the pattern's inverse.
-  Color pattern_at_object(const Tuple& object_point) const { return pattern_at(inverse_ * object_point); }
+  // (An untransformed pattern skips the product by the identity, which
+  // gives the same point: every shaded point of a patterned surface asks.)
+  Color pattern_at_object(const Tuple& object_point) const {
+    return pattern_at(untransformed_ ? object_point : inverse_ * object_point);
+  }
   // The colour at a world point on `shape` (through its parents, if any).
   Color pattern_at_shape(const Shape& shape, const Tuple& world_point) const;
 
@@ -41,6 +45,7 @@ class Pattern {
  private:
   Matrix4 transform_ = Matrix4::identity();
   Affine inverse_;
+  bool untransformed_ = true;  // transform_ is the identity
 };
 
 // floor() that treats values within a hair below an integer as that integer,
