@@ -163,7 +163,7 @@ Color refracted(const World& world, const Computations& comps, int remaining, co
 // shade_hit, for a ray that started inside `before` (or unknown).
 Color shade(const World& world, const Computations& comps, int remaining, const Containers& before) {
   const Material& m = comps.object->material();
-  const Color color = surface_color(m, *comps.object, comps.over_point);
+  const Color base_color = surface_color(m, *comps.object, comps.over_point);
   Color surface = kBlack;
   for (std::size_t i = 0; i < world.lights.size(); ++i) {
     const PointLight& light = world.lights[i];
@@ -175,13 +175,13 @@ Color shade(const World& world, const Computations& comps, int remaining, const 
     const bool faces_light = dot(lightv, comps.normalv) >= 0;
     const bool shadowed =
         faces_light && shadow_ray_blocked(world, comps.over_point, light.position, static_cast<std::ptrdiff_t>(i));
-    surface += lighting_towards(m, color, light, lightv, comps.eyev, comps.normalv, shadowed ? 0.0 : 1.0);
+    surface += lighting_towards(m, base_color, light, lightv, comps.eyev, comps.normalv, shadowed ? 0.0 : 1.0);
   }
   for (const AreaLight& light : world.area_lights) {
     // A light wholly behind the surface lights nothing: spare its shadow rays.
     const double visible =
         light.in_front_of(comps.over_point, comps.normalv) ? intensity_at(light, comps.over_point, world) : 0.0;
-    surface += lighting(m, color, light, comps.over_point, comps.eyev, comps.normalv, visible);
+    surface += lighting(m, base_color, light, comps.over_point, comps.eyev, comps.normalv, visible);
   }
   // Emission: an exact no-op for the default black (x + 0 == x), skipped.
   if (m.emissive.r != 0 || m.emissive.g != 0 || m.emissive.b != 0) surface += m.emissive;
