@@ -629,11 +629,18 @@ void ShapeBvh::add_light_buffer(const std::vector<Item>& items, const Tuple& lig
   lb.first.assign(cell_count + 1, 0);
   for (std::size_t k = 0; k < items.size(); ++k) for_each_cell(k, [&](std::size_t c, double) { ++lb.first[c + 1]; });
   for (std::size_t c = 0; c < cell_count; ++c) lb.first[c + 1] += lb.first[c];
-  // A light whose cells would hold too much (many shapes near it, each in
-  // many cells) keeps no buffer: its shadow rays walk the index.
+  // A light whose cells would hold too much keeps no buffer: its shadow rays
+  // walk the index. Too much is more than the walk would test: many shapes
+  // near the light, each in many cells; or shapes that fill few cells, many
+  // to a cell (a light far from them all), more on average than the
+  // hierarchy has levels (a cell's boxes are tested one at a time in turn,
+  // the walk's two at a time, a level at a time).
   const std::size_t entries = lb.first[cell_count];
+  std::size_t filled = 0;
+  for (std::size_t c = 0; c < cell_count; ++c) filled += lb.first[c + 1] > lb.first[c];
   if (entries > kLightBufferEntriesPerShape * items.size() ||
-      entries * sizeof(LightBuffer::Entry) > kLightBufferBytes) {
+      entries * sizeof(LightBuffer::Entry) > kLightBufferBytes ||
+      static_cast<double>(entries) > std::log2(static_cast<double>(items.size())) * static_cast<double>(filled)) {
     light_buffers_.push_back({});
     return;
   }

@@ -233,6 +233,16 @@ TEST(ShapeBvh, ShadowRaysTowardsAPointLightAreBlockedAsTheWalkSays) {
   EXPECT_GT(open, 2000);
 }
 
+// A light far from every shape sees them all in a few cells, each holding
+// many: more than a walk of the hierarchy tests, so it keeps no buffer (the
+// index is no larger than without it); a light among the shapes keeps one.
+TEST(ShapeBvh, ALightThatSeesTheShapesManyToACellKeepsNoBuffer) {
+  const auto shapes = scattered_shapes();
+  const std::size_t without = ShapeBvh(shapes).bytes();
+  EXPECT_EQ(ShapeBvh(shapes, std::vector<Tuple>{point(3e4, 5e4, -4e4)}).bytes(), without);
+  EXPECT_GT(ShapeBvh(shapes, std::vector<Tuple>{point(0.5, 0.3, -0.2)}).bytes(), without);
+}
+
 TEST(ShapeBvh, AMovedOrUnknownLightIsAnsweredByTheWalk) {
   const auto shapes = scattered_shapes();
   const ShapeBvh bvh(shapes, std::vector<Tuple>{point(0, 0, -30)});
