@@ -200,8 +200,12 @@ ShapeBvh::ShapeBvh(std::span<const std::shared_ptr<Shape>> shapes, std::span<con
       pairs.push_back(n);
     }
   }
-  if (light_buffers)
+  if (light_buffers) {
     for (const Tuple& light : point_lights) add_light_buffer(items, light);
+    // The leaves' boxes serve the buffers alone: none kept, none needed.
+    if (std::none_of(light_buffers_.begin(), light_buffers_.end(), [](const LightBuffer& lb) { return lb.cells > 0; }))
+      std::vector<Node>().swap(leaves_);
+  }
   nodes_.reserve(items.size() - 1);
   root_.link[0] = build(items, 0, items.size(), 0, kRoot, 0);
   has_root_ = true;
